@@ -1,0 +1,101 @@
+#pragma once
+/**
+ * The main job as pure stages: holes → tool groups → an ordered open path per
+ * tool → G-code passes, with the travel and machining time of the optimized
+ * order and of the baselines. The CLI only reads files, calls these and writes.
+ */
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "aco/geometry.h"
+#include "aco/problem.h"
+#include "aco/solve.h"
+#include "gcode/program.h"
+
+namespace app {
+
+// A machine profile (JSON, see README "Machine profile"); defaults describe a
+// HAAS VF-2-class vertical mill.
+struct Machine {
+  std::string name = "HAAS VF-2 class";
+  double rapid_xy_mm_min = 25400.0;  // 1000 in/min
+  double rapid_z_mm_min = 25400.0;
+  double accel_mm_s2 = 2500.0;       // per axis
+  bool linear_rapids = false;        // HAAS G00 moves each axis at its own rate ("dogleg")
+  double tool_change_s = 4.2;        // chip to chip
+  aco::Point2 start{0.0, 0.0};       // where the spindle is at the start and returns to (work XY)
+  double x_min = -762.0, x_max = 762.0, y_min = -406.0, y_max = 406.0;  // reachable work XY
+};
+
+Machine load_machine(const std::string& path);
+
+// Cutting data presets for generated tool tables.
+enum class Material { Steel, Aluminium, Pcb };
+std::optional<Material> material_from_string(const std::string& name);
+const char* to_string(Material m);
+
+struct ToolTableEntry {
+  gcode::Tool tool;
+  double min_hole_mm = 0.0;   // holes in [min, max] are drilled with this tool
+  double max_hole_mm = 0.0;
+};
+
+struct ToolTable {
+  std::vector<ToolTableEntry> entries;  // drilling order
+  bool generated = false;
+};
+
+ToolTable load_tool_table(const std::string& path);
+// One tool per distinct diameter (to 0.001 mm), ascending, feeds and speeds from the material.
+ToolTable generate_tool_table(const aco::HoleSet& holes, Material material, double thickness_mm);
+
+enum class Objective { Distance, Time };
+
+struct PlanOptions {
+  aco::Params solver;
+  Objective objective = Objective::Distance;
+  Machine machine;
+  std::optional<ToolTable> tools;  // nullopt: generated
+  Material material = Material::Steel;
+  double thickness_mm = 6.35;      // the thesis's 1/4" plate
+  gcode::ProgramSettings program;
+};
+
+struct ToolGroup {
+  gcode::Tool tool;
+  std::vector<aco::HoleIndex> input_order;  // indices into the hole set, in input order
+  aco::Order optimized;                     // the same indices, in drilling order
+  aco::Order nearest_neighbor;              // baseline
+  aco::Solution solution;
+};
+
+struct RouteStats {
+  double travel_mm = 0.0;   // XY, start → every hole of every tool → start
+  double time_s = 0.0;      // machining time estimate
+};
+
+struct PlanResult {
+  std::vector<ToolGroup> groups;
+  RouteStats input_order, nearest_neighbor, optimized;
+  int iterations = 0;       // summed over tool groups
+  double solver_wall_s = 0.0;
+  std::vector<double> thread_busy_s;
+  aco::Params solver;       // with defaults resolved
+};
+
+// Groups the holes by tool and orders every group. Throws UserError (file
+// `source`) for a hole no tool fits or one outside the machine's travel.
+PlanResult plan_job(const aco::HoleSet& holes, const PlanOptions& options, const std::string& source);
+
+// The drilling passes of a plan, ready for gcode::write_program.
+std::vector<gcode::ToolPass> to_passes(const aco::HoleSet& holes, const PlanResult& plan);
+
+// XY travel and time of drilling the groups in the given orders.
+RouteStats route_stats(const aco::HoleSet& holes, const std::vector<ToolGroup>& groups,
+                       const std::vector<const aco::Order*>& orders, const PlanOptions& options);
+
+// Time of one rapid move of `distance` mm at `rate_mm_min` with acceleration `accel` (trapezoidal profile).
+double rapid_time_s(double distance, double rate_mm_min, double accel_mm_s2);
+
+}  // namespace app

@@ -1,0 +1,483 @@
+// acodrill: the command line. It parses options, reads files, calls the
+// pure stages (readers → plan_job → write_program) and writes the outputs.
+// Argument parsing is CLI11 (Debian libcli11-dev): subcommands, typed options
+// and generated --help in a few lines each, where hand-written parsing would
+// be a few hundred lines of error-prone code.
+#include <unistd.h>
+
+#include <CLI/CLI.hpp>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <sstream>
+
+#include "aco/error.h"
+#include "aco/solve.h"
+#include "app/errors.h"
+#include "app/files.h"
+#include "app/inputs.h"
+#include "app/plan.h"
+#include "app/report.h"
+#include "gcode/interpreter.h"
+#include "gcode/program.h"
+
+namespace {
+
+constexpr const char* kVersion = "acodrill 0.1.0";
+
+struct SolverArgs {
+  int threads = 0;
+  std::uint64_t seed = 1;
+  double time_limit = 0.0;
+  int iterations = 0;
+  std::string algorithm = "mmas";
+  int ants = 0;
+  double alpha = 1.0;
+  std::optional<double> beta, rho;
+  std::string local_search = "2opt+oropt";
+};
+
+void add_solver_options(CLI::App* cmd, SolverArgs& a) {
+  cmd->add_option("--threads", a.threads, "Worker threads (default: all cores)")->check(CLI::Range(1, 1024));
+  cmd->add_option("--seed", a.seed, "Random seed; same input, options and seed give the same output (default 1)");
+  cmd->add_option("--time-limit", a.time_limit, "Stop after S seconds per tool (0 = no limit)")->check(CLI::Range(0.0, 1e7));
+  cmd->add_option("--iterations", a.iterations, "Colony iterations (default: 300, or until the time limit)")
+      ->check(CLI::Range(1, 100000000));
+  cmd->add_option("--algorithm", a.algorithm, "as (the thesis's Ant System), mmas (MAX-MIN, default), acs");
+  cmd->add_option("--ants", a.ants, "Ants per iteration (default: 10 with local search, else min(n,100))")
+      ->check(CLI::Range(1, 100000));
+  cmd->add_option("--alpha", a.alpha, "Pheromone weight (default 1)")->check(CLI::Range(0.0, 100.0));
+  cmd->add_option("--beta", a.beta, "Distance weight (default: as 4, mmas/acs 2)")->check(CLI::Range(0.0, 100.0));
+  cmd->add_option("--rho", a.rho, "Evaporation rate in (0,1] (default: as 0.5, mmas 0.2, acs 0.1)");
+  cmd->add_option("--local-search", a.local_search, "none | 2opt | 2opt+oropt (default)");
+}
+
+aco::Params to_params(const SolverArgs& a) {
+  aco::Params p;
+  auto alg = aco::algorithm_from_string(a.algorithm);
+  if (!alg) throw app::UserError("--algorithm must be one of as, mmas, acs (got \"" + a.algorithm + "\")");
+  auto ls = aco::local_search_from_string(a.local_search);
+  if (!ls) throw app::UserError("--local-search must be one of none, 2opt, 2opt+oropt (got \"" + a.local_search + "\")");
+  if (a.rho && !(*a.rho > 0.0 && *a.rho <= 1.0)) throw app::UserError("--rho must be in (0, 1]");
+  p.algorithm = *alg;
+  p.local_search = *ls;
+  p.threads = a.threads;
+  p.seed = a.seed;
+  p.time_limit_s = a.time_limit;
+  p.iterations = a.iterations;
+  p.ants = a.ants;
+  p.alpha = a.alpha;
+  if (a.beta) p.beta = *a.beta;
+  if (a.rho) p.rho = *a.rho;
+  p.validate();
+  return p;
+}
+
+struct InputArgs {
+  std::vector<std::string> layers;
+  std::optional<double> min_d, max_d;
+  std::string input_units;
+  std::size_t max_holes = 5'000'000;
+};
+
+void add_input_options(CLI::App* cmd, InputArgs& a) {
+  cmd->add_option("--layer", a.layers, "Only holes on these layers (repeatable; * and ? wildcards)");
+  cmd->add_option("--min-diameter", a.min_d, "Only holes at least this wide (mm)")->check(CLI::Range(0.0, 1e9));
+  cmd->add_option("--max-diameter", a.max_d, "Only holes at most this wide (mm)")->check(CLI::Range(0.0, 1e9));
+  cmd->add_option("--input-units", a.input_units, "mm | inch: units of inputs that do not say (default mm)");
+  cmd->add_option("--max-holes", a.max_holes, "Refuse inputs with more holes than this (default 5000000)")
+      ->check(CLI::Range(std::size_t{1}, std::size_t{100'000'000}));
+}
+
+app::InputOptions to_input_options(const InputArgs& a) {
+  app::InputOptions o;
+  o.dxf.layers = a.layers;
+  if (a.min_d) o.dxf.min_diameter_mm = *a.min_d;
+  if (a.max_d) o.dxf.max_diameter_mm = *a.max_d;
+  o.dxf.max_holes = a.max_holes;
+  if (!a.input_units.empty()) {
+    if (a.input_units == "mm") o.default_unit_mm = 1.0;
+    else if (a.input_units == "inch" || a.input_units == "in") o.default_unit_mm = 25.4;
+    else throw app::UserError("--input-units must be mm or inch (got \"" + a.input_units + "\")");
+    o.input_units_given = true;
+  }
+  return o;
+}
+
+void print_warnings(const app::LoadedHoles& loaded, const std::string& path, bool quiet) {
+  if (quiet) return;
+  std::string summary = std::to_string(loaded.holes.size()) + " holes from " + std::string(app::to_string(loaded.format));
+  if (loaded.duplicates_removed) summary += ", " + std::to_string(loaded.duplicates_removed) + " duplicates removed";
+  if (loaded.skipped_by_filter) summary += ", " + std::to_string(loaded.skipped_by_filter) + " filtered out";
+  std::size_t warnings = 0;
+  std::string first;
+  for (const app::Note& n : loaded.warnings) {
+    if (n.message.find("duplicate") != std::string::npos) continue;
+    if (warnings++ == 0) first = (n.line ? std::to_string(n.line) + ": " : "") + n.message;
+  }
+  if (warnings == 1) summary += "; warning: " + first;
+  if (warnings > 1) summary += "; " + std::to_string(warnings) + " warnings, first: " + first;
+  std::cerr << "acodrill: " << (path == "-" ? "<stdin>" : path) << ": " << summary << "\n";
+}
+
+std::string format_minutes(double seconds) {
+  return gcode::format_number(seconds / 60.0, 2) + " min";
+}
+
+int cmd_holes(const std::string& input, const InputArgs& in_args, const std::string& format, bool quiet) {
+  if (format != "csv") throw app::UserError("--format must be csv");
+  app::LoadedHoles loaded = app::load_holes(input, to_input_options(in_args));
+  std::string out = "x_mm,y_mm,diameter_mm,layer\n";
+  out.reserve(loaded.holes.size() * 40 + 32);
+  for (const aco::Hole& h : loaded.holes) {
+    out += gcode::format_number(h.center.x, 6) + "," + gcode::format_number(h.center.y, 6) + "," +
+           gcode::format_number(h.diameter, 6) + ",";
+    // A layer name with a comma or quote is quoted, CSV-style.
+    if (h.layer.find_first_of(",\"\n") != std::string::npos) {
+      std::string q = "\"";
+      for (char c : h.layer) q += (c == '"') ? std::string("\"\"") : std::string(1, c);
+      out += q + "\"";
+    } else {
+      out += h.layer;
+    }
+    out += "\n";
+  }
+  std::cout << out;
+  std::cout.flush();
+  print_warnings(loaded, input, quiet);
+  return 0;
+}
+
+struct PlanArgs {
+  std::string input, output, report, svg, convergence;
+  std::string dialect = "haas", units = "mm", tools, machine, material = "steel", objective = "distance";
+  double thickness = 6.35;
+  std::size_t resume_from = 1;
+  int program_number = 1001;
+  bool quiet = false;
+};
+
+int cmd_plan(const PlanArgs& a, const SolverArgs& s, const InputArgs& in_args) {
+  // Refuse to overwrite the input with the program before doing any work.
+  for (const std::string* out : {&a.output, &a.report, &a.svg, &a.convergence}) {
+    if (!out->empty() && app::same_file(a.input, *out)) {
+      throw app::UserError(*out, 0, "output would overwrite the input file");
+    }
+  }
+  app::PlanOptions o;
+  o.solver = to_params(s);
+  auto dialect = gcode::dialect_from_string(a.dialect);
+  if (!dialect) throw app::UserError("--dialect must be haas, fanuc or linuxcnc (got \"" + a.dialect + "\")");
+  o.program.dialect = *dialect;
+  if (a.units == "mm") o.program.units = gcode::Units::Mm;
+  else if (a.units == "inch" || a.units == "in") o.program.units = gcode::Units::Inch;
+  else throw app::UserError("--units must be mm or inch (got \"" + a.units + "\")");
+  auto material = app::material_from_string(a.material);
+  if (!material) throw app::UserError("--material must be steel, aluminium or pcb (got \"" + a.material + "\")");
+  o.material = *material;
+  if (!(a.thickness > 0)) throw app::UserError("--thickness must be positive");
+  o.thickness_mm = a.thickness;
+  if (a.objective == "distance") o.objective = app::Objective::Distance;
+  else if (a.objective == "time") o.objective = app::Objective::Time;
+  else throw app::UserError("--objective must be distance or time (got \"" + a.objective + "\")");
+  if (!a.machine.empty()) o.machine = app::load_machine(a.machine);
+  if (!a.tools.empty()) o.tools = app::load_tool_table(a.tools);
+
+  app::LoadedHoles loaded = app::load_holes(a.input, to_input_options(in_args));
+  if (loaded.holes.empty()) throw app::UserError(a.input == "-" ? "<stdin>" : a.input, 0, "no holes to drill");
+
+  const bool progress = !a.quiet && ::isatty(STDERR_FILENO);
+  if (progress) {
+    o.solver.on_iteration = [](const aco::Progress& p) {
+      if (p.wall_s < 1.0) return;
+      std::fprintf(stderr, "\racodrill: iteration %d, %.1f s, best %.3f mm   ", p.iteration, p.wall_s, p.best_length);
+    };
+  }
+  const std::string source = a.input == "-" ? "<stdin>" : a.input;
+  app::PlanResult plan = app::plan_job(loaded.holes, o, source);
+  if (progress) std::fprintf(stderr, "\r%60s\r", "");
+
+  gcode::ProgramSettings& ps = o.program;
+  ps.program_number = a.program_number;
+  ps.program_name = loaded.name;
+  ps.home = o.machine.start;
+  ps.resume_from = a.resume_from;
+  std::size_t n_tools = plan.groups.size();
+  ps.header_comments = {
+      "SOURCE: " + source.substr(source.find_last_of('/') == std::string::npos ? 0 : source.find_last_of('/') + 1),
+      std::to_string(loaded.holes.size()) + " HOLES, " + std::to_string(n_tools) + (n_tools == 1 ? " TOOL" : " TOOLS"),
+      "EST. TIME " + format_minutes(plan.optimized.time_s) + ", TRAVEL " +
+          gcode::format_number(plan.optimized.travel_mm, 1) + " MM",
+      "ORDER: ACODRILL " + std::string(aco::to_string(plan.solver.algorithm)) + " SEED " +
+          std::to_string(plan.solver.seed)};
+  std::ostringstream program;
+  try {
+    gcode::write_program(program, app::to_passes(loaded.holes, plan), ps);
+  } catch (const std::invalid_argument& e) {
+    throw app::UserError(e.what());
+  }
+
+  // Everything is computed; now write, each file complete or not at all.
+  app::write_file_atomic(a.output, program.str());
+  app::ReportContext ctx{source, a.output, loaded.holes.size()};
+  if (!a.report.empty()) app::write_file_atomic(a.report, app::report_json(loaded.holes, plan, ctx));
+  if (!a.convergence.empty()) app::write_file_atomic(a.convergence, app::convergence_csv(plan));
+
+  if (!a.quiet) {
+    print_warnings(loaded, a.input, a.quiet);
+    const auto& in = plan.input_order;
+    const auto& nn = plan.nearest_neighbor;
+    const auto& op = plan.optimized;
+    auto pct = [](double before, double after) {
+      return before > 0 ? gcode::format_number(100.0 * (before - after) / before, 1) + " %" : std::string("-");
+    };
+    std::fprintf(stderr, "acodrill: %zu holes, %zu tool%s, %d iterations in %.2f s on %d thread%s\n",
+                 loaded.holes.size(), n_tools, n_tools == 1 ? "" : "s", plan.iterations, plan.solver_wall_s,
+                 plan.solver.threads, plan.solver.threads == 1 ? "" : "s");
+    std::fprintf(stderr, "  %-18s %12s %12s\n", "order", "travel mm", "time min");
+    std::fprintf(stderr, "  %-18s %12.1f %12.2f\n", "input order", in.travel_mm, in.time_s / 60);
+    std::fprintf(stderr, "  %-18s %12.1f %12.2f\n", "nearest neighbour", nn.travel_mm, nn.time_s / 60);
+    std::fprintf(stderr, "  %-18s %12.1f %12.2f\n", "optimized", op.travel_mm, op.time_s / 60);
+    std::fprintf(stderr, "  saved vs input order: %s travel, %s time; vs nearest neighbour: %s travel\n",
+                 pct(in.travel_mm, op.travel_mm).c_str(), pct(in.time_s, op.time_s).c_str(),
+                 pct(nn.travel_mm, op.travel_mm).c_str());
+    if (a.output != "-") std::fprintf(stderr, "  program: %s\n", a.output.c_str());
+    if (!a.report.empty()) std::fprintf(stderr, "  report: %s\n", a.report.c_str());
+    if (!a.convergence.empty()) std::fprintf(stderr, "  convergence: %s\n", a.convergence.c_str());
+  }
+  return 0;
+}
+
+int cmd_tsp(const std::string& input, const std::string& tour, const SolverArgs& s, bool quiet) {
+  aco::Params params = to_params(s);
+  app::InputOptions io;
+  app::LoadedHoles loaded = app::load_holes(input, io);
+  if (loaded.holes.empty()) throw app::UserError(input, 0, "no nodes");
+  aco::Problem p;
+  p.metric = aco::Metric::TsplibEuc2d;
+  p.shape = aco::Shape::ClosedTour;
+  for (const aco::Hole& h : loaded.holes) p.points.push_back(h.center);
+  if (!quiet && ::isatty(STDERR_FILENO)) {
+    params.on_iteration = [](const aco::Progress& pr) {
+      if (pr.wall_s >= 1.0) std::fprintf(stderr, "\racodrill: iteration %d, %.1f s, best %.0f   ", pr.iteration, pr.wall_s, pr.best_length);
+    };
+  }
+  aco::Solution sol = aco::solve(p, params);
+  if (params.on_iteration) std::fprintf(stderr, "\r%60s\r", "");
+  if (!tour.empty()) {
+    std::ostringstream t;
+    t << "NAME : " << loaded.name << ".tour\nCOMMENT : length " << static_cast<long long>(std::llround(sol.length))
+      << ", acodrill " << aco::to_string(sol.algorithm) << " seed " << s.seed << "\nTYPE : TOUR\nDIMENSION : "
+      << sol.order.size() << "\nTOUR_SECTION\n";
+    for (aco::HoleIndex h : sol.order) t << (h + 1) << "\n";
+    t << "-1\nEOF\n";
+    app::write_file_atomic(tour, t.str());
+  }
+  std::printf("length %lld\n", static_cast<long long>(std::llround(sol.length)));
+  if (!quiet) {
+    std::fprintf(stderr, "acodrill: %s, %zu nodes, %d iterations, %.2f s, %d threads (%s)\n", loaded.name.c_str(),
+                 p.points.size(), sol.iterations, sol.wall_s, sol.threads, sol.stop_reason.c_str());
+  }
+  return 0;
+}
+
+int cmd_verify(const std::string& program_path, const std::string& holes_path, const InputArgs& in_args, bool quiet) {
+  const std::string text = app::read_file(program_path);
+  gcode::Interpretation run;
+  try {
+    run = gcode::interpret(text);
+  } catch (const gcode::ProgramError& e) {
+    throw app::UserError(program_path, e.line(), e.what());
+  }
+  std::map<int, std::size_t> per_tool;
+  for (const auto& h : run.holes) per_tool[h.tool]++;
+  std::printf("holes %zu\n", run.holes.size());
+  for (const auto& [tool, count] : per_tool) {
+    auto d = run.tool_diameter_mm.find(tool);
+    std::printf("tool %d holes %zu diameter_mm %s\n", tool, count,
+                d == run.tool_diameter_mm.end() ? "unknown" : gcode::format_number(d->second, 3).c_str());
+  }
+  std::printf("rapid_xy_mm %s\n", gcode::format_number(run.rapid_xy_mm, 3).c_str());
+  if (holes_path.empty()) return 0;
+
+  app::LoadedHoles expected = app::load_holes(holes_path, to_input_options(in_args));
+  // Each input hole must be drilled exactly once, at its place (within the
+  // program's printed precision), by a tool of its diameter.
+  const double tol = run.inch ? 0.00006 * 25.4 + 1e-6 : 0.0006 + 1e-6;
+  std::vector<char> used(run.holes.size(), 0);
+  // Bucket drilled positions on a grid of the tolerance for near-linear matching.
+  std::multimap<std::pair<long long, long long>, std::size_t> grid;
+  auto cell = [&](double x, double y) { return std::make_pair(std::llround(x / (2 * tol)), std::llround(y / (2 * tol))); };
+  for (std::size_t i = 0; i < run.holes.size(); ++i) grid.emplace(cell(run.holes[i].x_mm, run.holes[i].y_mm), i);
+  std::vector<std::string> faults;
+  std::map<long long, int> tool_of_diameter;  // diameter (µm) → tool
+  for (const aco::Hole& h : expected.holes) {
+    auto [cx, cy] = cell(h.center.x, h.center.y);
+    std::vector<std::size_t> matches;
+    for (long long dx = -1; dx <= 1; ++dx) {
+      for (long long dy = -1; dy <= 1; ++dy) {
+        auto range = grid.equal_range({cx + dx, cy + dy});
+        for (auto it = range.first; it != range.second; ++it) {
+          const auto& d = run.holes[it->second];
+          if (std::fabs(d.x_mm - h.center.x) <= tol && std::fabs(d.y_mm - h.center.y) <= tol) matches.push_back(it->second);
+        }
+      }
+    }
+    const std::string at = "(" + gcode::format_number(h.center.x, 3) + ", " + gcode::format_number(h.center.y, 3) + ")";
+    if (matches.empty()) {
+      faults.push_back("hole " + at + " D" + gcode::format_number(h.diameter, 3) + " is not drilled");
+      continue;
+    }
+    if (matches.size() > 1) faults.push_back("hole " + at + " is drilled " + std::to_string(matches.size()) + " times");
+    for (std::size_t m : matches) used[m] = 1;
+    const auto& d = run.holes[matches.front()];
+    auto known = run.tool_diameter_mm.find(d.tool);
+    if (known != run.tool_diameter_mm.end() && std::fabs(known->second - h.diameter) > 0.0015 && h.diameter > 0) {
+      faults.push_back("hole " + at + " D" + gcode::format_number(h.diameter, 3) + " is drilled with T" +
+                       std::to_string(d.tool) + " D" + gcode::format_number(known->second, 3) + " (line " +
+                       std::to_string(d.line) + ")");
+    }
+    const long long key = std::llround(h.diameter * 1000.0);
+    auto [it, inserted] = tool_of_diameter.emplace(key, d.tool);
+    if (!inserted && it->second != d.tool) {
+      faults.push_back("holes of D" + gcode::format_number(h.diameter, 3) + " are drilled with T" +
+                       std::to_string(it->second) + " and T" + std::to_string(d.tool));
+    }
+  }
+  for (std::size_t i = 0; i < run.holes.size(); ++i) {
+    if (!used[i]) {
+      faults.push_back("line " + std::to_string(run.holes[i].line) + " drills (" +
+                       gcode::format_number(run.holes[i].x_mm, 3) + ", " + gcode::format_number(run.holes[i].y_mm, 3) +
+                       "), which is not an input hole");
+    }
+  }
+  if (faults.empty()) {
+    std::printf("ok: %zu input holes drilled once each with the right tool\n", expected.holes.size());
+    return 0;
+  }
+  std::printf("faults %zu\n", faults.size());
+  for (const auto& f : faults) std::printf("fault: %s\n", f.c_str());
+  if (!quiet) std::fprintf(stderr, "acodrill: %s: %zu fault(s), first: %s\n", program_path.c_str(), faults.size(), faults[0].c_str());
+  return 1;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App cli{"acodrill orders the drill holes of a part so the spindle travels as little as possible, "
+               "and writes the G-code that drills them.\n\n"
+               "Examples:\n"
+               "  acodrill plan plate.dxf -o plate.nc --report plate.json\n"
+               "  acodrill plan board.drl -o board.nc --dialect linuxcnc --units inch\n"
+               "  acodrill holes plate.dxf --format csv > holes.csv\n"
+               "  acodrill verify plate.nc --holes plate.dxf\n"
+               "  acodrill tsp pcb442.tsp --time-limit 1\n",
+               "acodrill"};
+  cli.set_version_flag("--version", kVersion);
+  cli.require_subcommand(1);
+  bool quiet = false;
+
+  SolverArgs solver;
+  InputArgs in_args;
+  PlanArgs plan;
+  auto* plan_cmd = cli.add_subcommand("plan", "Read holes, order them per tool and write a drilling program");
+  plan_cmd->footer(
+      "Examples:\n"
+      "  acodrill plan plate.dxf -o plate.nc                       HAAS program, mm\n"
+      "  acodrill plan plate.dxf -o - --quiet > plate.nc           program on stdout, nothing else\n"
+      "  acodrill plan plate.dxf -o plate.nc --report r.json --convergence c.csv\n"
+      "  acodrill plan plate.dxf -o plate.nc --tools tools.json --machine vf2.json\n"
+      "  acodrill plan plate.dxf -o plate.nc --resume-from 37      restart at hole N37 after a broken drill\n"
+      "  acodrill plan plate.dxf -o plate.nc --algorithm as --local-search none --ants 125 --iterations 125\n"
+      "                                                            the thesis's Ant System\n"
+      "Inputs: DXF, Excellon, XML hole map, CSV (x,y,diameter mm), TSPLIB; '-' reads stdin.");
+  plan_cmd->add_option("input", plan.input, "Input file (DXF, Excellon, XML, CSV, TSPLIB) or - for stdin")->required();
+  plan_cmd->add_option("-o,--output", plan.output, "Program to write (- = stdout)")->required();
+  plan_cmd->add_option("--report", plan.report, "Write a JSON report: holes, tools, travel, time, solver");
+  plan_cmd->add_option("--svg", plan.svg, "Write a picture of the route (SVG)");
+  plan_cmd->add_option("--convergence", plan.convergence, "Write best length by iteration and time (CSV)");
+  plan_cmd->add_option("--dialect", plan.dialect, "haas (default) | fanuc | linuxcnc");
+  plan_cmd->add_option("--units", plan.units, "Program units: mm (default) | inch");
+  plan_cmd->add_option("--tools", plan.tools, "Tool table (JSON); default: one tool per diameter");
+  plan_cmd->add_option("--machine", plan.machine, "Machine profile (JSON); default: HAAS VF-2 class");
+  plan_cmd->add_option("--material", plan.material, "steel (default) | aluminium | pcb: feeds and speeds of generated tools");
+  plan_cmd->add_option("--thickness", plan.thickness, "Part thickness in mm for generated tools (default 6.35)");
+  plan_cmd->add_option("--objective", plan.objective, "distance (default) | time: minimise travel or rapid time");
+  plan_cmd->add_option("--resume-from", plan.resume_from, "Drill holes N, N+1, ... of the same order (default 1)")
+      ->check(CLI::Range(std::size_t{1}, std::size_t{100'000'000}));
+  plan_cmd->add_option("--program-number", plan.program_number, "O-number (default 1001)")->check(CLI::Range(1, 99999));
+  plan_cmd->add_flag("-q,--quiet", plan.quiet, "Print nothing on success");
+  add_solver_options(plan_cmd, solver);
+  add_input_options(plan_cmd, in_args);
+
+  std::string holes_input, holes_format = "csv";
+  auto* holes_cmd = cli.add_subcommand("holes", "Print the holes an input holds (mm, world coordinates)");
+  holes_cmd->footer("Example:\n  acodrill holes plate.dxf --format csv --layer 'DRILL*' > holes.csv");
+  holes_cmd->add_option("input", holes_input, "Input file or - for stdin")->required();
+  holes_cmd->add_option("--format", holes_format, "Output format: csv")->required();
+  holes_cmd->add_flag("-q,--quiet", quiet, "No summary on stderr");
+  InputArgs holes_in;
+  add_input_options(holes_cmd, holes_in);
+
+  std::string tsp_input, tsp_tour;
+  SolverArgs tsp_solver;
+  auto* tsp_cmd = cli.add_subcommand("tsp", "Solve a TSPLIB instance as a closed tour and print its length");
+  tsp_cmd->footer("Example:\n  acodrill tsp pcb442.tsp --time-limit 1 --tour pcb442.tour");
+  tsp_cmd->add_option("instance", tsp_input, "TSPLIB .tsp file (EUC_2D)")->required();
+  tsp_cmd->add_option("--tour", tsp_tour, "Write the tour in TSPLIB TOUR format");
+  tsp_cmd->add_flag("-q,--quiet", quiet, "Print only the length");
+  add_solver_options(tsp_cmd, tsp_solver);
+
+  std::string verify_program, verify_holes;
+  InputArgs verify_in;
+  auto* verify_cmd = cli.add_subcommand("verify", "Read a drilling program back: what it drills, with which tool");
+  verify_cmd->footer("Exit 1 when --holes is given and a hole is missed, repeated, moved or drilled with the wrong tool.\n"
+                     "Example:\n  acodrill verify plate.nc --holes plate.dxf");
+  verify_cmd->add_option("program", verify_program, "G-code program")->required();
+  verify_cmd->add_option("--holes", verify_holes, "The input the program should drill");
+  verify_cmd->add_flag("-q,--quiet", quiet, "No summary on stderr");
+  add_input_options(verify_cmd, verify_in);
+
+  // CLI11 would call an unknown command "a subcommand is required"; name it.
+  if (argc > 1 && argv[1][0] != '-') {
+    const std::string first = argv[1];
+    if (first != "plan" && first != "holes" && first != "tsp" && first != "verify") {
+      std::cerr << "acodrill: error: unknown command \"" << first << "\"; commands: plan, holes, tsp, verify (see acodrill --help)\n";
+      return 2;
+    }
+  }
+  try {
+    cli.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return cli.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return cli.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return cli.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::string msg = e.what();
+    for (char& c : msg) if (c == '\n') c = ' ';
+    std::cerr << "acodrill: error: " << msg << " (see acodrill --help)\n";
+    return 2;
+  }
+
+  try {
+    if (*plan_cmd) return cmd_plan(plan, solver, in_args);
+    if (*holes_cmd) return cmd_holes(holes_input, holes_in, holes_format, quiet);
+    if (*tsp_cmd) return cmd_tsp(tsp_input, tsp_tour, tsp_solver, quiet);
+    if (*verify_cmd) return cmd_verify(verify_program, verify_holes, verify_in, quiet);
+  } catch (const app::UserError& e) {
+    std::cerr << "acodrill: error: " << e.where_what() << "\n";
+    return 2;
+  } catch (const aco::Error& e) {
+    std::cerr << "acodrill: error: " << e.what() << "\n";
+    return e.exit_code();
+  } catch (const std::bad_alloc&) {
+    std::cerr << "acodrill: error: out of memory\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "acodrill: error: internal: " << e.what() << "\n";
+    return 3;
+  }
+  return 2;
+}

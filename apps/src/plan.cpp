@@ -1,0 +1,346 @@
+#include "app/plan.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <nlohmann/json.hpp>
+
+#include "aco/baselines.h"
+#include "app/errors.h"
+#include "app/files.h"
+
+namespace app {
+
+namespace {
+
+using nlohmann::json;
+
+std::string fmt3(double v) { return gcode::format_number(v, 3); }
+
+double json_number(const json& j, const char* key, double fallback, const std::string& path) {
+  if (!j.contains(key)) return fallback;
+  const json& v = j.at(key);
+  if (!v.is_number()) throw UserError(path, 0, std::string("\"") + key + "\" must be a number");
+  const double d = v.get<double>();
+  if (!std::isfinite(d)) throw UserError(path, 0, std::string("\"") + key + "\" must be finite");
+  return d;
+}
+
+json parse_json_file(const std::string& path) {
+  const std::string text = read_file(path);
+  try {
+    return json::parse(text);
+  } catch (const json::parse_error& e) {
+    // nlohmann reports a byte offset; turn it into a line.
+    const std::size_t at = std::min<std::size_t>(e.byte, text.size());
+    const auto line = static_cast<std::uint32_t>(1 + std::count(text.begin(), text.begin() + static_cast<long>(at), '\n'));
+    std::string what = e.what();
+    if (auto p = what.find("parse error"); p != std::string::npos) what = what.substr(p);
+    throw UserError(path, line, "invalid JSON: " + what);
+  }
+}
+
+}  // namespace
+
+Machine load_machine(const std::string& path) {
+  json j = parse_json_file(path);
+  if (!j.is_object()) throw UserError(path, 1, "a machine profile is a JSON object");
+  Machine m;
+  if (j.contains("name") && j["name"].is_string()) m.name = j["name"].get<std::string>();
+  m.rapid_xy_mm_min = json_number(j, "rapid_xy_mm_min", m.rapid_xy_mm_min, path);
+  m.rapid_z_mm_min = json_number(j, "rapid_z_mm_min", m.rapid_z_mm_min, path);
+  m.accel_mm_s2 = json_number(j, "accel_mm_s2", m.accel_mm_s2, path);
+  m.tool_change_s = json_number(j, "tool_change_s", m.tool_change_s, path);
+  if (j.contains("linear_rapids")) {
+    if (!j["linear_rapids"].is_boolean()) throw UserError(path, 0, "\"linear_rapids\" must be true or false");
+    m.linear_rapids = j["linear_rapids"].get<bool>();
+  }
+  m.start.x = json_number(j, "start_x_mm", m.start.x, path);
+  m.start.y = json_number(j, "start_y_mm", m.start.y, path);
+  m.x_min = json_number(j, "x_min_mm", m.x_min, path);
+  m.x_max = json_number(j, "x_max_mm", m.x_max, path);
+  m.y_min = json_number(j, "y_min_mm", m.y_min, path);
+  m.y_max = json_number(j, "y_max_mm", m.y_max, path);
+  if (!(m.rapid_xy_mm_min > 0) || !(m.rapid_z_mm_min > 0) || !(m.accel_mm_s2 > 0)) {
+    throw UserError(path, 0, "rapid rates and acceleration must be positive");
+  }
+  if (m.tool_change_s < 0) throw UserError(path, 0, "tool_change_s must be >= 0");
+  if (!(m.x_min < m.x_max) || !(m.y_min < m.y_max)) throw UserError(path, 0, "travel limits are empty (min >= max)");
+  return m;
+}
+
+std::optional<Material> material_from_string(const std::string& name) {
+  for (Material m : {Material::Steel, Material::Aluminium, Material::Pcb}) {
+    if (name == to_string(m)) return m;
+  }
+  if (name == "aluminum") return Material::Aluminium;
+  return std::nullopt;
+}
+
+const char* to_string(Material m) {
+  switch (m) {
+    case Material::Steel: return "steel";
+    case Material::Aluminium: return "aluminium";
+    case Material::Pcb: return "pcb";
+  }
+  return "?";
+}
+
+ToolTable load_tool_table(const std::string& path) {
+  json j = parse_json_file(path);
+  const json* list = &j;
+  if (j.is_object() && j.contains("tools")) list = &j["tools"];
+  if (!list->is_array() || list->empty()) throw UserError(path, 1, "a tool table is {\"tools\": [ ... ]} with at least one tool");
+  ToolTable t;
+  int position = 0;
+  for (const json& e : *list) {
+    ++position;
+    const std::string where = path + " (tool " + std::to_string(position) + ")";
+    if (!e.is_object()) throw UserError(where, 0, "each tool is a JSON object");
+    ToolTableEntry entry;
+    gcode::Tool& tool = entry.tool;
+    tool.number = static_cast<int>(json_number(e, "number", position, where));
+    tool.diameter_mm = json_number(e, "diameter_mm", -1, where);
+    if (!(tool.diameter_mm > 0)) throw UserError(where, 0, "\"diameter_mm\" must be given and positive");
+    if (e.contains("name") && e["name"].is_string()) tool.name = e["name"].get<std::string>();
+    tool.spindle_rpm = static_cast<int>(json_number(e, "rpm", 3000, where));
+    tool.feed_mm_min = json_number(e, "feed_mm_min", 250, where);
+    tool.depth_mm = json_number(e, "depth_mm", -8, where);
+    tool.peck_mm = json_number(e, "peck_mm", 0, where);
+    tool.dwell_s = json_number(e, "dwell_s", 0, where);
+    if (e.contains("cycle")) {
+      auto c = e["cycle"].is_string() ? gcode::cycle_from_string(e["cycle"].get<std::string>()) : std::nullopt;
+      if (!c) throw UserError(where, 0, "\"cycle\" must be one of G81, G82, G83, G73");
+      tool.cycle = *c;
+    }
+    entry.min_hole_mm = json_number(e, "min_hole_mm", tool.diameter_mm - 0.0005, where);
+    entry.max_hole_mm = json_number(e, "max_hole_mm", tool.diameter_mm + 0.0005, where);
+    if (tool.number < 1 || tool.number > 200) throw UserError(where, 0, "tool numbers are 1..200");
+    if (tool.spindle_rpm < 1) throw UserError(where, 0, "\"rpm\" must be >= 1");
+    if (!(tool.feed_mm_min > 0)) throw UserError(where, 0, "\"feed_mm_min\" must be positive");
+    if (!(tool.depth_mm < 0)) throw UserError(where, 0, "\"depth_mm\" is the Z of the drill tip and must be below 0");
+    if ((tool.cycle == gcode::Cycle::G83 || tool.cycle == gcode::Cycle::G73) && !(tool.peck_mm > 0)) {
+      throw UserError(where, 0, "G83/G73 need \"peck_mm\" > 0");
+    }
+    if (tool.cycle == gcode::Cycle::G82 && !(tool.dwell_s > 0)) throw UserError(where, 0, "G82 needs \"dwell_s\" > 0");
+    t.entries.push_back(entry);
+  }
+  return t;
+}
+
+ToolTable generate_tool_table(const aco::HoleSet& holes, Material material, double thickness_mm) {
+  std::vector<long long> keys;  // diameters in micrometres
+  keys.reserve(holes.size());
+  for (const aco::Hole& h : holes) keys.push_back(std::llround(h.diameter * 1000.0));
+  std::sort(keys.begin(), keys.end());
+  keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+  // Cutting speed (m/min) and feed per revolution as a fraction of the
+  // diameter, for HSS drills (Machinery's Handbook ranges, conservative end).
+  double vc = 20.0, feed_per_d = 0.015, max_rpm = 8100.0;
+  switch (material) {
+    case Material::Steel: vc = 20.0; feed_per_d = 0.015; break;
+    case Material::Aluminium: vc = 60.0; feed_per_d = 0.025; break;
+    case Material::Pcb: vc = 100.0; feed_per_d = 0.02; max_rpm = 60000.0; break;
+  }
+  ToolTable t;
+  t.generated = true;
+  int number = 0;
+  for (long long k : keys) {
+    ToolTableEntry e;
+    gcode::Tool& tool = e.tool;
+    tool.number = ++number;
+    tool.diameter_mm = static_cast<double>(k) / 1000.0;
+    const double d = std::max(tool.diameter_mm, 0.1);
+    tool.spindle_rpm = static_cast<int>(std::clamp(std::round(1000.0 * vc / (M_PI * d)), 100.0, max_rpm));
+    tool.feed_mm_min = std::max(10.0, std::round(tool.spindle_rpm * feed_per_d * d));
+    // Through the plate, plus the 118° point (0.3 D) and 0.5 mm to break through.
+    tool.depth_mm = -(thickness_mm + 0.3 * d + 0.5);
+    if (-tool.depth_mm > 4.0 * d) {
+      tool.cycle = gcode::Cycle::G83;  // deep hole: peck to clear chips
+      tool.peck_mm = std::max(0.5, std::round(d * 10.0) / 10.0);
+    }
+    e.min_hole_mm = tool.diameter_mm - 0.0005;
+    e.max_hole_mm = tool.diameter_mm + 0.0005;
+    t.entries.push_back(e);
+  }
+  return t;
+}
+
+double rapid_time_s(double distance, double rate_mm_min, double accel) {
+  if (distance <= 0.0) return 0.0;
+  const double v = rate_mm_min / 60.0;
+  // Trapezoid: accelerate to v, cruise, brake; a short move never reaches v (triangle).
+  if (distance >= v * v / accel) return distance / v + v / accel;
+  return 2.0 * std::sqrt(distance / accel);
+}
+
+namespace {
+
+double xy_move_time(aco::Point2 a, aco::Point2 b, const Machine& m) {
+  const double dx = std::fabs(a.x - b.x), dy = std::fabs(a.y - b.y);
+  if (m.linear_rapids) return rapid_time_s(std::hypot(dx, dy), m.rapid_xy_mm_min, m.accel_mm_s2);
+  return std::max(rapid_time_s(dx, m.rapid_xy_mm_min, m.accel_mm_s2), rapid_time_s(dy, m.rapid_xy_mm_min, m.accel_mm_s2));
+}
+
+// Z time of one hole's cycle at the R plane: feed down, pecks, dwell, rapid out.
+double cycle_time_s(const gcode::Tool& t, const gcode::ProgramSettings& s, const Machine& m, bool retract_initial) {
+  const double depth = s.r_plane_mm - t.depth_mm;
+  double time = depth / t.feed_mm_min * 60.0;
+  const auto zr = [&](double d) { return rapid_time_s(d, m.rapid_z_mm_min, m.accel_mm_s2); };
+  if ((t.cycle == gcode::Cycle::G83 || t.cycle == gcode::Cycle::G73) && t.peck_mm > 0) {
+    const int pecks = static_cast<int>(std::ceil(depth / t.peck_mm));
+    for (int k = 1; k < pecks; ++k) {
+      const double reached = k * t.peck_mm;
+      // G83 retracts to R and comes back; G73 backs off a little.
+      time += t.cycle == gcode::Cycle::G83 ? 2.0 * zr(reached) : 2.0 * zr(0.25);
+    }
+  }
+  if (t.cycle == gcode::Cycle::G82) time += t.dwell_s;
+  time += zr(depth);  // out of the hole to R
+  if (retract_initial) time += 2.0 * zr(s.initial_z_mm - s.r_plane_mm);
+  return time;
+}
+
+}  // namespace
+
+RouteStats route_stats(const aco::HoleSet& holes, const std::vector<ToolGroup>& groups,
+                       const std::vector<const aco::Order*>& orders, const PlanOptions& options) {
+  RouteStats st;
+  const Machine& m = options.machine;
+  const auto& s = options.program;
+  aco::Point2 at = m.start;
+  for (std::size_t g = 0; g < groups.size(); ++g) {
+    const aco::Order& order = *orders[g];
+    if (order.empty()) continue;
+    st.time_s += m.tool_change_s;
+    // Down from Z home to the initial plane, once per tool (approximate Z home as 100 mm up).
+    st.time_s += rapid_time_s(100.0, m.rapid_z_mm_min, m.accel_mm_s2);
+    for (std::size_t i = 0; i < order.size(); ++i) {
+      const aco::Point2 p = holes[order[i]].center;
+      st.travel_mm += aco::euclidean(at, p);
+      st.time_s += xy_move_time(at, p, m);
+      const bool last = i + 1 == order.size();
+      st.time_s += cycle_time_s(groups[g].tool, s, m, !s.retract_to_r || last);
+      if (i == 0) st.time_s += rapid_time_s(s.initial_z_mm - s.r_plane_mm, m.rapid_z_mm_min, m.accel_mm_s2);
+      at = p;
+    }
+    st.time_s += rapid_time_s(100.0, m.rapid_z_mm_min, m.accel_mm_s2);
+  }
+  st.travel_mm += aco::euclidean(at, m.start);
+  st.time_s += xy_move_time(at, m.start, m);
+  return st;
+}
+
+PlanResult plan_job(const aco::HoleSet& holes, const PlanOptions& options, const std::string& source) {
+  const Machine& m = options.machine;
+  // Travel limits first: a hole the machine cannot reach is the user's to fix.
+  std::vector<std::string> outside;
+  for (const aco::Hole& h : holes) {
+    if (h.center.x < m.x_min || h.center.x > m.x_max || h.center.y < m.y_min || h.center.y > m.y_max) {
+      if (outside.size() < 5) outside.push_back("(" + fmt3(h.center.x) + ", " + fmt3(h.center.y) + ")");
+      else if (outside.size() == 5) outside.push_back("...");
+    }
+  }
+  if (!outside.empty()) {
+    std::string list;
+    for (const auto& o : outside) list += (list.empty() ? "" : " ") + o;
+    throw UserError(source, 0, "hole(s) outside the machine's travel X " + fmt3(m.x_min) + ".." + fmt3(m.x_max) +
+                                   " Y " + fmt3(m.y_min) + ".." + fmt3(m.y_max) + " mm: " + list);
+  }
+
+  ToolTable table = options.tools ? *options.tools
+                                  : generate_tool_table(holes, options.material, options.thickness_mm);
+  PlanResult result;
+  result.groups.resize(table.entries.size());
+  std::vector<std::string> unfit;
+  std::size_t unfit_count = 0;
+  for (std::size_t i = 0; i < holes.size(); ++i) {
+    const double d = holes[i].diameter;
+    std::size_t chosen = table.entries.size();
+    for (std::size_t t = 0; t < table.entries.size(); ++t) {
+      if (d >= table.entries[t].min_hole_mm - 1e-9 && d <= table.entries[t].max_hole_mm + 1e-9) {
+        chosen = t;
+        break;
+      }
+    }
+    if (chosen == table.entries.size()) {
+      ++unfit_count;
+      if (unfit.size() < 5) {
+        unfit.push_back("D" + fmt3(d) + " at (" + fmt3(holes[i].center.x) + ", " + fmt3(holes[i].center.y) + ")" +
+                        (holes[i].source_line ? " line " + std::to_string(holes[i].source_line) : ""));
+      }
+      continue;
+    }
+    result.groups[chosen].input_order.push_back(static_cast<aco::HoleIndex>(i));
+  }
+  if (unfit_count > 0) {
+    std::string list;
+    for (const auto& u : unfit) list += (list.empty() ? "" : "; ") + u;
+    if (unfit_count > unfit.size()) list += "; ...";
+    throw UserError(source, 0, std::to_string(unfit_count) + " hole(s) fit no tool in the tool table: " + list);
+  }
+  for (std::size_t t = 0; t < table.entries.size(); ++t) result.groups[t].tool = table.entries[t].tool;
+  result.groups.erase(std::remove_if(result.groups.begin(), result.groups.end(),
+                                     [](const ToolGroup& g) { return g.input_order.empty(); }),
+                      result.groups.end());
+
+  // Each tool's holes as an open path from where the previous tool ended; the
+  // last one ends at the start position, so the return home is optimised too.
+  const aco::Metric metric = options.objective == Objective::Time && !m.linear_rapids ? aco::Metric::Chebyshev
+                                                                                      : aco::Metric::Euclidean;
+  aco::Point2 at = m.start, at_nn = m.start;
+  result.solver = aco::resolve(options.solver, holes.size());
+  for (std::size_t g = 0; g < result.groups.size(); ++g) {
+    ToolGroup& group = result.groups[g];
+    const bool last = g + 1 == result.groups.size();
+    aco::Problem p;
+    p.metric = metric;
+    p.shape = aco::Shape::OpenPath;
+    p.start = at;
+    if (last) p.end = m.start;
+    p.points.reserve(group.input_order.size());
+    for (aco::HoleIndex h : group.input_order) p.points.push_back(holes[h].center);
+    group.solution = aco::solve(p, options.solver);
+    for (aco::HoleIndex local : group.solution.order) group.optimized.push_back(group.input_order[local]);
+    aco::Problem pnn = p;
+    pnn.start = at_nn;
+    for (aco::HoleIndex local : aco::nearest_neighbor(pnn)) group.nearest_neighbor.push_back(group.input_order[local]);
+    at = holes[group.optimized.back()].center;
+    at_nn = holes[group.nearest_neighbor.back()].center;
+    result.iterations += group.solution.iterations;
+    result.solver_wall_s += group.solution.wall_s;
+    if (result.thread_busy_s.size() < group.solution.thread_busy_s.size()) {
+      result.thread_busy_s.resize(group.solution.thread_busy_s.size(), 0.0);
+    }
+    for (std::size_t k = 0; k < group.solution.thread_busy_s.size(); ++k) {
+      result.thread_busy_s[k] += group.solution.thread_busy_s[k];
+    }
+  }
+  std::vector<const aco::Order*> in, nn, opt;
+  for (const ToolGroup& g : result.groups) {
+    in.push_back(&g.input_order);
+    nn.push_back(&g.nearest_neighbor);
+    opt.push_back(&g.optimized);
+  }
+  result.input_order = route_stats(holes, result.groups, in, options);
+  result.nearest_neighbor = route_stats(holes, result.groups, nn, options);
+  result.optimized = route_stats(holes, result.groups, opt, options);
+  return result;
+}
+
+std::vector<gcode::ToolPass> to_passes(const aco::HoleSet& holes, const PlanResult& plan) {
+  std::vector<gcode::ToolPass> passes;
+  std::size_t index = 0;
+  for (const ToolGroup& g : plan.groups) {
+    gcode::ToolPass pass;
+    pass.tool = g.tool;
+    for (aco::HoleIndex h : g.optimized) {
+      pass.holes.push_back(holes[h].center);
+      pass.index.push_back(++index);
+    }
+    passes.push_back(std::move(pass));
+  }
+  return passes;
+}
+
+}  // namespace app

@@ -1,0 +1,72 @@
+#include "app/report.h"
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+namespace app {
+
+namespace {
+double round6(double v) { return std::round(v * 1e6) / 1e6; }
+double pct_saved(double before, double after) { return before > 0 ? round6(100.0 * (before - after) / before) : 0.0; }
+}  // namespace
+
+std::string report_json(const aco::HoleSet& holes, const PlanResult& plan, const ReportContext& ctx) {
+  nlohmann::ordered_json j;
+  j["holes"] = holes.size();
+  j["tools"] = nlohmann::ordered_json::array();
+  for (const ToolGroup& g : plan.groups) {
+    nlohmann::ordered_json t;
+    t["tool"] = g.tool.number;
+    t["diameter_mm"] = round6(g.tool.diameter_mm);
+    t["holes"] = g.optimized.size();
+    t["cycle"] = gcode::to_string(g.tool.cycle);
+    t["spindle_rpm"] = g.tool.spindle_rpm;
+    t["feed_mm_min"] = round6(g.tool.feed_mm_min);
+    t["depth_mm"] = round6(g.tool.depth_mm);
+    t["iterations"] = g.solution.iterations;
+    t["stop_reason"] = g.solution.stop_reason;
+    t["path_mm"] = round6(g.solution.length);
+    j["tools"].push_back(t);
+  }
+  j["travel_mm"] = {{"input_order", round6(plan.input_order.travel_mm)},
+                    {"nearest_neighbor", round6(plan.nearest_neighbor.travel_mm)},
+                    {"optimized", round6(plan.optimized.travel_mm)}};
+  j["machining_time_s"] = {{"input_order", round6(plan.input_order.time_s)},
+                           {"nearest_neighbor", round6(plan.nearest_neighbor.time_s)},
+                           {"optimized", round6(plan.optimized.time_s)}};
+  j["savings"] = {{"travel_pct_vs_input_order", pct_saved(plan.input_order.travel_mm, plan.optimized.travel_mm)},
+                  {"travel_pct_vs_nearest_neighbor", pct_saved(plan.nearest_neighbor.travel_mm, plan.optimized.travel_mm)},
+                  {"time_s_vs_input_order", round6(plan.input_order.time_s - plan.optimized.time_s)},
+                  {"time_pct_vs_input_order", pct_saved(plan.input_order.time_s, plan.optimized.time_s)}};
+  nlohmann::ordered_json busy = nlohmann::ordered_json::array();
+  for (double b : plan.thread_busy_s) busy.push_back(round6(b));
+  j["solver"] = {{"algorithm", aco::to_string(plan.solver.algorithm)},
+                 {"threads", plan.solver.threads},
+                 {"seed", plan.solver.seed},
+                 {"iterations", plan.iterations},
+                 {"wall_s", round6(plan.solver_wall_s)},
+                 {"ants", plan.solver.ants},
+                 {"alpha", plan.solver.alpha},
+                 {"beta", plan.solver.beta},
+                 {"rho", plan.solver.rho},
+                 {"local_search", aco::to_string(plan.solver.local_search)},
+                 {"thread_busy_s", busy}};
+  j["source"] = ctx.source;
+  j["program"] = ctx.program;
+  return j.dump(2) + "\n";
+}
+
+std::string convergence_csv(const PlanResult& plan) {
+  std::ostringstream out;
+  out << "tool,iteration,wall_s,best_length_mm\n";
+  out.precision(10);
+  for (const ToolGroup& g : plan.groups) {
+    for (const aco::TracePoint& t : g.solution.trace) {
+      out << g.tool.number << ',' << t.iteration << ',' << t.wall_s << ',' << t.best_length << '\n';
+    }
+  }
+  return out.str();
+}
+
+}  // namespace app

@@ -1,0 +1,83 @@
+#pragma once
+/**
+ * DXF → holes. A layered reader after ezdxf: bytes → group-code tags →
+ * sections → entities → holes. Every CIRCLE in model space becomes a hole,
+ * including those reached through INSERT/MINSERT (nested, scaled, rotated,
+ * mirrored, arrayed), placed in world coordinates (OCS applied) and converted
+ * to millimetres from $INSUNITS.
+ *
+ * Structural failures throw dxf::ReadError carrying the 1-based line;
+ * sloppiness that can be read safely becomes a Diagnostic warning.
+ *
+ * **Example**:
+ *   dxf::ReadResult r = dxf::read_holes(file_text, dxf::ReadOptions{});
+ *   for (const aco::Hole& h : r.holes) use(h.center, h.diameter);
+ */
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "aco/geometry.h"
+
+namespace dxf {
+
+enum class Severity { Warning, Error };
+
+struct Diagnostic {
+  Severity severity = Severity::Warning;
+  std::uint32_t line = 0;  // 0 = the file as a whole
+  std::string message;
+};
+
+// An input the reader cannot turn into holes. line() is 0 when no single line is to blame.
+class ReadError : public std::runtime_error {
+ public:
+  ReadError(std::uint32_t line, const std::string& message)
+      : std::runtime_error(message), line_(line) {}
+  std::uint32_t line() const { return line_; }
+
+ private:
+  std::uint32_t line_;
+};
+
+struct ReadOptions {
+  // Millimetres per drawing unit when $INSUNITS is absent or 0 ("unitless").
+  double default_unit_mm = 1.0;
+  // Layer name patterns with * and ? wildcards, case-insensitive; empty = every layer.
+  std::vector<std::string> layers;
+  double min_diameter_mm = 0.0;
+  double max_diameter_mm = std::numeric_limits<double>::infinity();
+  // Caps that keep a hostile file from eating the machine: holes produced, and
+  // block references followed (an INSERT array of empty blocks makes no holes but costs time).
+  std::size_t max_holes = 5'000'000;
+  std::size_t max_block_references = 20'000'000;
+  int max_block_depth = 200;
+};
+
+struct ReadResult {
+  aco::HoleSet holes;                   // file order, duplicates removed, mm
+  std::vector<Diagnostic> diagnostics;  // warnings and notes, in file order
+  std::size_t duplicates_removed = 0;
+  std::size_t skipped_by_filter = 0;    // dropped by --layer / --min/--max-diameter
+  std::string version;                  // $ACADVER, e.g. "AC1024"; empty for R10/R12 files without it
+  double unit_mm = 1.0;                 // millimetres per drawing unit that was applied
+  bool binary = false;
+};
+
+// Reads a whole DXF file held in memory (ASCII or binary).
+ReadResult read_holes(std::string_view data, const ReadOptions& options = {});
+
+// True when the first bytes look like a DXF (ASCII "0 / SECTION" or the binary sentinel).
+bool looks_like_dxf(std::string_view head);
+
+// Case-insensitive match with * (any run) and ? (one character).
+bool wildcard_match(std::string_view pattern, std::string_view text);
+
+// Millimetres per unit for a $INSUNITS code; 0 for "unitless" or an unknown code.
+double insunits_to_mm(int code);
+
+}  // namespace dxf

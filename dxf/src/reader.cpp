@@ -1,0 +1,683 @@
+// Layers 2-4 of the DXF reader: sections → entities → holes.
+//
+// Only what makes a hole is interpreted: the HEADER's $INSUNITS and $ACADVER,
+// BLOCK_RECORD handles (to recognise paper space), BLOCK definitions, and
+// CIRCLE / INSERT entities. Everything else is skipped tag by tag, so an
+// entity type we have never seen cannot break the read.
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cmath>
+#include <cstring>
+#include <string>
+#include <unordered_map>
+#include <unordered_set>
+
+#include "aco/hole_set.h"
+#include "dxf/reader.h"
+#include "tag_reader.h"
+
+namespace dxf {
+
+namespace {
+
+using Vec3 = std::array<double, 3>;
+
+Vec3 cross(const Vec3& a, const Vec3& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+double norm(const Vec3& a) { return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]); }
+
+// Affine map x' = L x + t, as a 3x4 matrix.
+struct Affine {
+  double m[3][4] = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}};
+
+  Vec3 apply(const Vec3& p) const {
+    Vec3 r{};
+    for (int i = 0; i < 3; ++i) r[i] = m[i][0] * p[0] + m[i][1] * p[1] + m[i][2] * p[2] + m[i][3];
+    return r;
+  }
+  Vec3 apply_linear(const Vec3& v) const {
+    Vec3 r{};
+    for (int i = 0; i < 3; ++i) r[i] = m[i][0] * v[0] + m[i][1] * v[1] + m[i][2] * v[2];
+    return r;
+  }
+  // (this ∘ o)(x) = this(o(x))
+  Affine then_after(const Affine& o) const {
+    Affine r;
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 4; ++j) {
+        double v = (j == 3) ? m[i][3] : 0.0;
+        for (int k = 0; k < 3; ++k) v += m[i][k] * o.m[k][j];
+        r.m[i][j] = v;
+      }
+    }
+    return r;
+  }
+};
+
+// DXF's arbitrary-axis algorithm: the OCS axes of an extrusion direction N.
+// (Reference: AutoCAD DXF Reference, "Arbitrary Axis Algorithm".) It is applied
+// for any N, because real files carry normals like (2.6e-24, 1.7e-20, -1).
+struct Ocs {
+  Vec3 ax{1, 0, 0}, ay{0, 1, 0}, az{0, 0, 1};
+};
+
+Ocs make_ocs(Vec3 n, std::uint32_t line) {
+  double len = norm(n);
+  if (!(len > 1e-12)) throw ReadError(line, "extrusion direction (210/220/230) is a zero vector");
+  for (double& c : n) c /= len;
+  Ocs o;
+  o.az = n;
+  constexpr double kLimit = 1.0 / 64.0;
+  Vec3 ax = (std::fabs(n[0]) < kLimit && std::fabs(n[1]) < kLimit) ? cross({0, 1, 0}, n) : cross({0, 0, 1}, n);
+  double l = norm(ax);
+  for (double& c : ax) c /= l;
+  o.ax = ax;
+  o.ay = cross(n, ax);
+  return o;
+}
+
+Affine ocs_to_wcs(const Ocs& o) {
+  Affine a;
+  for (int i = 0; i < 3; ++i) {
+    a.m[i][0] = o.ax[i];
+    a.m[i][1] = o.ay[i];
+    a.m[i][2] = o.az[i];
+    a.m[i][3] = 0.0;
+  }
+  return a;
+}
+
+std::string upper(std::string_view s) {
+  std::string r(s);
+  for (char& c : r) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return r;
+}
+
+struct Circle {
+  Vec3 center{0, 0, 0};  // OCS
+  double radius = 0.0;
+  Vec3 extrusion{0, 0, 1};
+  std::string_view layer;
+  std::uint32_t line = 0;
+};
+
+struct Insert {
+  std::string_view block;
+  Vec3 point{0, 0, 0};  // OCS
+  Vec3 scale{1, 1, 1};
+  double rotation_deg = 0.0;
+  int columns = 1, rows = 1;
+  double column_spacing = 0.0, row_spacing = 0.0;
+  Vec3 extrusion{0, 0, 1};
+  std::string_view layer;
+  std::uint32_t line = 0;
+};
+
+struct Block {
+  std::string name;
+  Vec3 base{0, 0, 0};
+  std::vector<Circle> circles;
+  std::vector<Insert> inserts;
+  std::vector<std::pair<bool, std::size_t>> order;  // (is_insert, index): file order
+  std::uint32_t line = 0;
+};
+
+// The fields of one entity, gathered from its tags.
+struct Fields {
+  std::string_view type;
+  std::uint32_t line = 0;
+  std::string_view layer = "0";
+  std::string_view name;    // 2: block name
+  std::string_view handle;  // 5
+  std::string_view owner;   // 330
+  Vec3 p{0, 0, 0};          // 10/20/30
+  bool has_p = false;
+  double radius = 0.0;  // 40
+  bool has_radius = false;
+  Vec3 scale{1, 1, 1};  // 41/42/43
+  double rotation = 0.0;  // 50
+  int columns = 1, rows = 1;  // 70/71 on INSERT
+  double column_spacing = 0.0, row_spacing = 0.0;  // 44/45
+  Vec3 extrusion{0, 0, 1};  // 210/220/230
+  bool paper_space = false;  // 67 = 1
+};
+
+class Parser {
+ public:
+  Parser(std::string_view text, const ReadOptions& options, ReadResult& result)
+      : tags_(text, result.diagnostics), options_(options), result_(result) {}
+
+  void run();
+
+ private:
+  bool advance() {
+    have_ = tags_.next(tag_);
+    return have_;
+  }
+  bool at0(std::string_view v) const { return have_ && tag_.code == 0 && trim(tag_.value) == v; }
+  void skip_to_next_0() {
+    while (advance() && tag_.code != 0) {
+    }
+  }
+  Fields read_fields(bool is_insert);
+  void read_header();
+  void read_tables();
+  void read_blocks();
+  void read_entities();
+  void expand();
+  void emit_circle(const Circle& c, const Affine& to_world);
+  void expand_insert(const Insert& ins, const Affine& parent, int depth);
+  bool is_paper(const Fields& f) const {
+    return f.paper_space || (!f.owner.empty() && paper_records_.count(upper(f.owner)) != 0);
+  }
+
+  TagReader tags_;
+  Tag tag_;
+  bool have_ = false;
+  const ReadOptions& options_;
+  ReadResult& result_;
+
+  int insunits_ = -1;
+  std::unordered_set<std::string> paper_records_;  // handles of *Paper_Space* block records
+  std::vector<Block> blocks_;
+  std::unordered_map<std::string, std::size_t> block_index_;  // upper-case name → blocks_
+  std::vector<Circle> model_circles_;
+  std::vector<Insert> model_inserts_;
+  // Model-space entities in file order: (is_insert, index into the vector above).
+  std::vector<std::pair<bool, std::size_t>> model_order_;
+  bool saw_entities_ = false;
+  bool saw_eof_ = false;
+  std::string open_section_;
+  std::uint32_t open_section_line_ = 0;
+
+  // Expansion state.
+  std::vector<std::size_t> stack_;
+  std::size_t references_ = 0;
+  std::size_t ellipses_ = 0;
+  std::size_t tilted_ = 0;
+  std::uint32_t first_ellipse_line_ = 0;
+  std::size_t raw_holes_ = 0;
+  aco::HoleSet raw_;
+};
+
+Fields Parser::read_fields(bool is_insert) {
+  Fields f;
+  f.type = trim(tag_.value);
+  f.line = tag_.line;
+  while (advance() && tag_.code != 0) {
+    switch (tag_.code) {
+      case 2: f.name = trim(tag_.value); break;
+      case 5: f.handle = trim(tag_.value); break;
+      case 8: f.layer = trim(tag_.value); break;
+      case 10: f.p[0] = parse_double(tag_); f.has_p = true; break;
+      case 20: f.p[1] = parse_double(tag_); break;
+      case 30: f.p[2] = parse_double(tag_); break;
+      case 40: f.radius = parse_double(tag_); f.has_radius = true; break;
+      case 41: f.scale[0] = parse_double(tag_); break;
+      case 42: f.scale[1] = parse_double(tag_); break;
+      case 43: f.scale[2] = parse_double(tag_); break;
+      case 44: if (is_insert) f.column_spacing = parse_double(tag_); break;
+      case 45: if (is_insert) f.row_spacing = parse_double(tag_); break;
+      case 50: f.rotation = parse_double(tag_); break;
+      case 67: f.paper_space = parse_int(tag_, result_.diagnostics) == 1; break;
+      case 70: if (is_insert) f.columns = parse_int(tag_, result_.diagnostics); break;
+      case 71: if (is_insert) f.rows = parse_int(tag_, result_.diagnostics); break;
+      case 210: f.extrusion[0] = parse_double(tag_); break;
+      case 220: f.extrusion[1] = parse_double(tag_); break;
+      case 230: f.extrusion[2] = parse_double(tag_); break;
+      case 330: if (f.owner.empty()) f.owner = trim(tag_.value); break;
+      default: break;
+    }
+  }
+  return f;
+}
+
+Circle to_circle(const Fields& f) {
+  if (!f.has_radius) throw ReadError(f.line, "CIRCLE has no radius (group code 40)");
+  if (!(f.radius > 0.0)) {
+    throw ReadError(f.line, "CIRCLE radius must be positive, found " + std::to_string(f.radius));
+  }
+  Circle c;
+  c.center = f.p;
+  c.radius = f.radius;
+  c.extrusion = f.extrusion;
+  c.layer = f.layer;
+  c.line = f.line;
+  return c;
+}
+
+Insert to_insert(const Fields& f) {
+  if (f.name.empty()) throw ReadError(f.line, "INSERT names no block (group code 2)");
+  if (f.columns < 1 || f.rows < 1) {
+    throw ReadError(f.line, "INSERT array of " + std::to_string(f.columns) + " x " + std::to_string(f.rows) +
+                                " (group codes 70/71) must be at least 1 x 1");
+  }
+  Insert ins;
+  ins.block = f.name;
+  ins.point = f.p;
+  ins.scale = f.scale;
+  // LibreCAD writes a Z scale of 0; a zero Z scale only flattens Z, which a
+  // drill hole does not have, so read it as 1 (as ezdxf does).
+  if (ins.scale[2] == 0.0) ins.scale[2] = 1.0;
+  ins.rotation_deg = f.rotation;
+  ins.columns = f.columns;
+  ins.rows = f.rows;
+  ins.column_spacing = f.column_spacing;
+  ins.row_spacing = f.row_spacing;
+  ins.extrusion = f.extrusion;
+  ins.layer = f.layer;
+  ins.line = f.line;
+  return ins;
+}
+
+void Parser::read_header() {
+  // Header variables: (9, $NAME) followed by its value tags, up to the next code 0.
+  std::string_view variable;
+  while (have_ && tag_.code != 0) {
+    if (tag_.code == 9) {
+      variable = trim(tag_.value);
+    } else if (variable == "$INSUNITS" && tag_.code == 70) {
+      insunits_ = parse_int(tag_, result_.diagnostics);
+    } else if (variable == "$ACADVER" && tag_.code == 1) {
+      result_.version = std::string(trim(tag_.value));
+    }
+    advance();
+  }
+}
+
+void Parser::read_tables() {
+  // Only BLOCK_RECORD entries matter: their handles tell which owner is paper space.
+  while (have_ && !at0("ENDSEC") && !at0("EOF") && !at0("SECTION")) {
+    if (tag_.code == 0 && trim(tag_.value) == "BLOCK_RECORD") {
+      Fields f = read_fields(false);
+      if (!f.handle.empty() && upper(f.name).rfind("*PAPER_SPACE", 0) == 0) {
+        paper_records_.insert(upper(f.handle));
+      }
+    } else {
+      skip_to_next_0();
+    }
+  }
+}
+
+void Parser::read_blocks() {
+  Block* current = nullptr;
+  bool current_is_paper = false;
+  while (have_ && !at0("ENDSEC") && !at0("EOF") && !at0("SECTION")) {
+    if (tag_.code != 0) {
+      advance();
+      continue;
+    }
+    std::string_view type = trim(tag_.value);
+    if (type == "BLOCK") {
+      Fields f = read_fields(false);
+      std::string key = upper(f.name);
+      if (key.empty()) throw ReadError(f.line, "BLOCK has no name (group code 2)");
+      Block b;
+      b.name = std::string(f.name);
+      b.base = f.p;
+      b.line = f.line;
+      current_is_paper = key.rfind("*PAPER_SPACE", 0) == 0;
+      auto [it, inserted] = block_index_.emplace(key, blocks_.size());
+      if (!inserted) {
+        result_.diagnostics.push_back({Severity::Warning, f.line,
+                                       "block \"" + b.name + "\" is defined twice; the later definition is used"});
+        blocks_[it->second] = std::move(b);
+        current = &blocks_[it->second];
+      } else {
+        blocks_.push_back(std::move(b));
+        current = &blocks_.back();
+      }
+    } else if (type == "ENDBLK") {
+      current = nullptr;
+      skip_to_next_0();
+    } else if (type == "CIRCLE" && current != nullptr && !current_is_paper) {
+      Fields f = read_fields(false);
+      current->order.emplace_back(false, current->circles.size());
+      current->circles.push_back(to_circle(f));
+    } else if (type == "INSERT" && current != nullptr && !current_is_paper) {
+      Fields f = read_fields(true);
+      current->order.emplace_back(true, current->inserts.size());
+      current->inserts.push_back(to_insert(f));
+    } else {
+      skip_to_next_0();
+    }
+  }
+}
+
+void Parser::read_entities() {
+  saw_entities_ = true;
+  while (have_ && !at0("ENDSEC") && !at0("EOF") && !at0("SECTION")) {
+    if (tag_.code != 0) {
+      advance();
+      continue;
+    }
+    std::string_view type = trim(tag_.value);
+    if (type == "CIRCLE") {
+      Fields f = read_fields(false);
+      Circle c = to_circle(f);
+      if (!is_paper(f)) {
+        model_order_.emplace_back(false, model_circles_.size());
+        model_circles_.push_back(c);
+      }
+    } else if (type == "INSERT") {
+      Fields f = read_fields(true);
+      Insert ins = to_insert(f);
+      if (!is_paper(f)) {
+        model_order_.emplace_back(true, model_inserts_.size());
+        model_inserts_.push_back(ins);
+      }
+    } else {
+      skip_to_next_0();
+    }
+  }
+}
+
+void Parser::run() {
+  if (!advance()) throw ReadError(0, "empty file: no DXF group codes");
+  while (have_) {
+    if (tag_.code != 0) {
+      advance();
+      continue;
+    }
+    std::string_view v = trim(tag_.value);
+    if (v == "EOF") {
+      saw_eof_ = true;
+      break;
+    }
+    if (v == "ENDSEC") {
+      open_section_.clear();
+      advance();
+      continue;
+    }
+    if (v != "SECTION") {
+      if (open_section_.empty()) {
+        throw ReadError(tag_.line, "expected SECTION or EOF, found \"" + std::string(v.substr(0, 40)) + "\"");
+      }
+      skip_to_next_0();
+      continue;
+    }
+    const std::uint32_t section_line = tag_.line;
+    if (!advance() || tag_.code != 2) {
+      throw ReadError(section_line, "SECTION without a name (group code 2)");
+    }
+    std::string name = upper(trim(tag_.value));
+    open_section_ = name;
+    open_section_line_ = section_line;
+    advance();
+    if (name == "HEADER") {
+      read_header();
+    } else if (name == "TABLES") {
+      read_tables();
+    } else if (name == "BLOCKS") {
+      read_blocks();
+    } else if (name == "ENTITIES") {
+      read_entities();
+    } else {
+      while (have_ && !at0("ENDSEC") && !at0("EOF") && !at0("SECTION")) skip_to_next_0();
+    }
+  }
+  if (!saw_eof_) {
+    if (!open_section_.empty()) {
+      throw ReadError(open_section_line_, "file ends inside the " + open_section_ +
+                                              " section with no ENDSEC (truncated file?)");
+    }
+    result_.diagnostics.push_back({Severity::Warning, 0, "no EOF marker at the end of the file"});
+  }
+  if (!saw_entities_ && blocks_.empty()) {
+    throw ReadError(0, "no ENTITIES section: not a DXF drawing");
+  }
+  expand();
+}
+
+void Parser::emit_circle(const Circle& c, const Affine& to_world) {
+  Ocs o = make_ocs(c.extrusion, c.line);
+  Affine m = to_world.then_after(ocs_to_wcs(o));
+  Vec3 center = m.apply(c.center);
+  Vec3 u = m.apply_linear({c.radius, 0, 0});
+  Vec3 v = m.apply_linear({0, c.radius, 0});
+  // The hole is what the drill sees from above: the circle projected on XY.
+  // It is a circle only if the two projected radius vectors are orthogonal and
+  // equally long; otherwise a non-uniform scale or a tilted plane made it an ellipse.
+  double lu = std::hypot(u[0], u[1]);
+  double lv = std::hypot(v[0], v[1]);
+  double dot = u[0] * v[0] + u[1] * v[1];
+  double tol = 1e-6 * std::max(lu, lv);
+  if (std::fabs(lu - lv) > tol || std::fabs(dot) > tol * std::max(lu, lv) || !(lu > 0.0)) {
+    bool tilted = std::fabs(u[2]) > tol || std::fabs(v[2]) > tol;
+    (tilted ? tilted_ : ellipses_)++;
+    if (first_ellipse_line_ == 0) first_ellipse_line_ = c.line;
+    return;
+  }
+  if (++raw_holes_ > options_.max_holes) {
+    throw ReadError(c.line, "more than " + std::to_string(options_.max_holes) +
+                                " holes (the hole limit); block arrays expand too far");
+  }
+  aco::Hole h;
+  h.center = {center[0], center[1]};
+  h.diameter = 2.0 * lu;
+  // The circle's own layer, as ezdxf reports it. (AutoCAD draws layer-"0"
+  // block content on the INSERT's layer, but that is display, and the
+  // reference reader keeps the entity's layer.)
+  h.layer = std::string(c.layer);
+  h.source_line = c.line;
+  raw_.push_back(std::move(h));
+}
+
+Affine insert_transform(const Insert& ins, const Vec3& base, int column, int row) {
+  const double a = ins.rotation_deg * M_PI / 180.0;
+  const double ca = std::cos(a), sa = std::sin(a);
+  // MINSERT: the array offset is laid out along the rotated block axes, unscaled.
+  const double ox = column * ins.column_spacing, oy = row * ins.row_spacing;
+  Vec3 p{ins.point[0] + ca * ox - sa * oy, ins.point[1] + sa * ox + ca * oy, ins.point[2]};
+  // block → OCS of the insert: scale about the base point, rotate about Z, move to p.
+  Affine local;
+  const double sx = ins.scale[0], sy = ins.scale[1], sz = ins.scale[2];
+  local.m[0][0] = ca * sx; local.m[0][1] = -sa * sy; local.m[0][2] = 0;
+  local.m[1][0] = sa * sx; local.m[1][1] = ca * sy;  local.m[1][2] = 0;
+  local.m[2][0] = 0;       local.m[2][1] = 0;        local.m[2][2] = sz;
+  for (int i = 0; i < 3; ++i) {
+    local.m[i][3] = p[i] - (local.m[i][0] * base[0] + local.m[i][1] * base[1] + local.m[i][2] * base[2]);
+  }
+  return local;
+}
+
+void Parser::expand_insert(const Insert& ins, const Affine& parent, int depth) {
+  auto it = block_index_.find(upper(ins.block));
+  if (it == block_index_.end()) {
+    throw ReadError(ins.line, "INSERT of undefined block \"" + std::string(ins.block) + "\"");
+  }
+  const std::size_t index = it->second;
+  if (std::find(stack_.begin(), stack_.end(), index) != stack_.end()) {
+    throw ReadError(ins.line, "block \"" + blocks_[index].name + "\" inserts itself (cyclic block reference)");
+  }
+  if (depth >= options_.max_block_depth) {
+    throw ReadError(ins.line, "blocks nested more than " + std::to_string(options_.max_block_depth) +
+                                  " deep at block \"" + blocks_[index].name + "\"");
+  }
+  const Block& block = blocks_[index];
+  const Affine to_parent_ocs = ocs_to_wcs(make_ocs(ins.extrusion, ins.line));
+  stack_.push_back(index);
+  for (int r = 0; r < ins.rows; ++r) {
+    for (int c = 0; c < ins.columns; ++c) {
+      if (++references_ > options_.max_block_references) {
+        throw ReadError(ins.line, "more than " + std::to_string(options_.max_block_references) +
+                                      " block references expanded (the expansion limit)");
+      }
+      Affine m = parent.then_after(to_parent_ocs).then_after(insert_transform(ins, block.base, c, r));
+      for (auto [is_insert, i] : block.order) {
+        if (is_insert) expand_insert(block.inserts[i], m, depth + 1);
+        else emit_circle(block.circles[i], m);
+      }
+    }
+  }
+  stack_.pop_back();
+}
+
+void Parser::expand() {
+  // File order, with each INSERT's holes where the INSERT stands (as ezdxf lists them).
+  Affine identity;
+  for (auto [is_insert, i] : model_order_) {
+    if (is_insert) expand_insert(model_inserts_[i], identity, 0);
+    else emit_circle(model_circles_[i], identity);
+  }
+  if (ellipses_ > 0) {
+    result_.diagnostics.push_back(
+        {Severity::Warning, first_ellipse_line_,
+         std::to_string(ellipses_) + " block circle(s) under a non-uniform scale are ellipses, not holes; skipped"});
+  }
+  if (tilted_ > 0) {
+    result_.diagnostics.push_back({Severity::Warning, first_ellipse_line_,
+                                   std::to_string(tilted_) +
+                                       " circle(s) not parallel to the XY plane are not drillable from above; skipped"});
+  }
+
+  // Units.
+  double unit = options_.default_unit_mm;
+  if (insunits_ > 0) {
+    unit = insunits_to_mm(insunits_);
+    if (unit == 0.0) {
+      result_.diagnostics.push_back({Severity::Warning, 0,
+                                     "unknown $INSUNITS " + std::to_string(insunits_) + "; millimetres assumed"});
+      unit = options_.default_unit_mm;
+    }
+  }
+  result_.unit_mm = unit;
+
+  // Scale and filter, then drop exact duplicates (same centre and diameter within 1e-6 mm).
+  constexpr double kTol = 1e-6;
+  aco::HoleSet& out = result_.holes;
+  out.reserve(raw_.size());
+  for (aco::Hole& h : raw_) {
+    h.center.x *= unit;
+    h.center.y *= unit;
+    h.diameter *= unit;
+    if (!std::isfinite(h.center.x) || !std::isfinite(h.center.y) || !std::isfinite(h.diameter)) {
+      throw ReadError(h.source_line, "circle lies outside the representable range");
+    }
+    bool keep_layer = options_.layers.empty();
+    for (const std::string& pattern : options_.layers) {
+      if (wildcard_match(pattern, h.layer)) {
+        keep_layer = true;
+        break;
+      }
+    }
+    if (!keep_layer || h.diameter < options_.min_diameter_mm - kTol || h.diameter > options_.max_diameter_mm + kTol) {
+      ++result_.skipped_by_filter;
+      continue;
+    }
+    out.push_back(std::move(h));
+  }
+  result_.duplicates_removed = aco::remove_duplicate_holes(out, kTol);
+  raw_.clear();
+  if (result_.duplicates_removed > 0) {
+    result_.diagnostics.push_back({Severity::Warning, 0,
+                                   std::to_string(result_.duplicates_removed) + " duplicate hole(s) removed"});
+  }
+}
+
+void check_text_encoding(std::string_view data) {
+  if (data.size() >= 2 && ((static_cast<unsigned char>(data[0]) == 0xFF && static_cast<unsigned char>(data[1]) == 0xFE) ||
+                           (static_cast<unsigned char>(data[0]) == 0xFE && static_cast<unsigned char>(data[1]) == 0xFF))) {
+    throw ReadError(1, "UTF-16 text is not a DXF encoding; save the drawing as ASCII DXF");
+  }
+  std::string_view head = data.substr(0, 4096);
+  std::size_t nul = head.find('\0');
+  if (nul != std::string_view::npos) {
+    std::uint32_t line = 1 + static_cast<std::uint32_t>(std::count(head.begin(), head.begin() + nul, '\n'));
+    bool utf16 = head.size() >= 4 && (head[1] == '\0' || head[0] == '\0');
+    throw ReadError(line, utf16 ? "UTF-16 text is not a DXF encoding; save the drawing as ASCII DXF"
+                                : "binary data in a text DXF (not a DXF file?)");
+  }
+}
+
+constexpr std::string_view kBinarySentinel{"AutoCAD Binary DXF\r\n\x1a\0", 22};
+
+}  // namespace
+
+double insunits_to_mm(int code) {
+  switch (code) {
+    case 1: return 25.4;            // inches
+    case 2: return 304.8;           // feet
+    case 3: return 1609344.0;       // miles
+    case 4: return 1.0;             // millimetres
+    case 5: return 10.0;            // centimetres
+    case 6: return 1000.0;          // metres
+    case 7: return 1e6;             // kilometres
+    case 8: return 25.4e-6;         // microinches
+    case 9: return 25.4e-3;         // mils
+    case 10: return 914.4;          // yards
+    case 11: return 1e-7;           // angstroms
+    case 12: return 1e-6;           // nanometres
+    case 13: return 1e-3;           // microns
+    case 14: return 100.0;          // decimetres
+    case 15: return 10000.0;        // decametres
+    case 16: return 100000.0;       // hectometres
+    case 17: return 1e12;           // gigametres
+    case 18: return 1.495978707e14; // astronomical units
+    case 19: return 9.4607304725808e18;  // light years
+    case 20: return 3.08567758149137e19; // parsecs
+    case 21: return 1200.0 / 3937.0 * 1000.0;  // US survey feet
+    case 22: return 1000.0 / 39.37;            // US survey inches
+    case 23: return 3600.0 / 3937.0 * 1000.0;  // US survey yards
+    case 24: return 1609347.218694;            // US survey miles
+    default: return 0.0;
+  }
+}
+
+bool wildcard_match(std::string_view pattern, std::string_view text) {
+  // Iterative matcher with one backtrack point for the last '*': linear in practice.
+  std::size_t p = 0, t = 0, star = std::string_view::npos, mark = 0;
+  auto eq = [](char a, char b) {
+    return std::toupper(static_cast<unsigned char>(a)) == std::toupper(static_cast<unsigned char>(b));
+  };
+  while (t < text.size()) {
+    if (p < pattern.size() && (pattern[p] == '?' || (pattern[p] != '*' && eq(pattern[p], text[t])))) {
+      ++p;
+      ++t;
+    } else if (p < pattern.size() && pattern[p] == '*') {
+      star = p++;
+      mark = t;
+    } else if (star != std::string_view::npos) {
+      p = star + 1;
+      t = ++mark;
+    } else {
+      return false;
+    }
+  }
+  while (p < pattern.size() && pattern[p] == '*') ++p;
+  return p == pattern.size();
+}
+
+bool looks_like_dxf(std::string_view head) {
+  if (head.substr(0, kBinarySentinel.size()) == kBinarySentinel) return true;
+  // First tag "0 / SECTION", after optional 999 comments and padding.
+  std::vector<Diagnostic> ignored;
+  TagReader tags(head, ignored);
+  Tag t;
+  try {
+    for (int i = 0; i < 50 && tags.next(t); ++i) {
+      if (t.code == 0) return trim(t.value) == "SECTION";
+    }
+  } catch (const ReadError&) {
+  }
+  return false;
+}
+
+ReadResult read_holes(std::string_view data, const ReadOptions& options) {
+  ReadResult result;
+  std::string converted;
+  if (data.substr(0, kBinarySentinel.size()) == kBinarySentinel) {
+    converted = binary_to_text(data);
+    data = converted;
+    result.binary = true;
+  } else {
+    check_text_encoding(data);
+  }
+  Parser parser(data, options, result);
+  parser.run();
+  return result;
+}
+
+}  // namespace dxf

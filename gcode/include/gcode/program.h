@@ -1,0 +1,72 @@
+#pragma once
+/**
+ * Drilling programs: tools, passes and the settings of one program, and the
+ * emitter that writes them as HAAS-style G-code with canned cycles.
+ *
+ * **Example**:
+ *   gcode::Tool t;  t.number = 1;  t.diameter_mm = 6.35;
+ *   gcode::ToolPass pass{t, {{10, 10}, {20, 10}}, {1, 2}};
+ *   gcode::write_program(std::cout, {pass}, gcode::ProgramSettings{});
+ */
+#include <cstddef>
+#include <optional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "aco/geometry.h"
+
+namespace gcode {
+
+enum class Dialect { Haas, Fanuc, LinuxCnc };
+enum class Units { Mm, Inch };
+enum class Cycle { G81, G82, G83, G73 };
+
+struct Tool {
+  int number = 1;              // T and H number
+  double diameter_mm = 0.0;    // the drill's diameter
+  std::string name;            // shown in comments; generated from the diameter when empty
+  int spindle_rpm = 3000;
+  double feed_mm_min = 250.0;
+  double depth_mm = -8.0;      // absolute Z of the drill tip at the bottom, drill-point allowance included
+  Cycle cycle = Cycle::G81;
+  double peck_mm = 0.0;        // Q for G83/G73
+  double dwell_s = 0.0;        // P for G82
+};
+
+// One tool's holes in drilling order. `index` gives each hole's 1-based number
+// in the whole program (shown as its N-number, used by --resume-from).
+struct ToolPass {
+  Tool tool;
+  std::vector<aco::Point2> holes;  // mm, work coordinates
+  std::vector<std::size_t> index;
+};
+
+struct ProgramSettings {
+  Dialect dialect = Dialect::Haas;
+  Units units = Units::Mm;
+  int program_number = 1001;               // O-number, 1..99999
+  std::string program_name = "ACODRILL";
+  std::vector<std::string> header_comments;  // source, holes and tools, estimated time
+  double initial_z_mm = 25.0;  // G43 H Z: clearance plane above the part (work Z)
+  double r_plane_mm = 2.5;     // R: where feeding starts
+  bool retract_to_r = true;    // G99 between holes (G98 on each tool's last hole); false: G98 always
+  std::size_t resume_from = 1; // first hole (1-based program index) to drill
+  std::optional<aco::Point2> home;  // XY to return to at the end (work coordinates)
+};
+
+const char* to_string(Dialect d);
+std::optional<Dialect> dialect_from_string(const std::string& name);
+const char* to_string(Cycle c);
+std::optional<Cycle> cycle_from_string(const std::string& name);
+
+// The tool's name, or "6.350 MM DRILL" made from its diameter.
+std::string tool_name(const Tool& tool);
+
+// Locale-independent fixed-point text: always a decimal point, never "-0.000".
+std::string format_number(double value, int decimals);
+
+// Writes the whole program. Throws std::invalid_argument for settings it cannot honour.
+void write_program(std::ostream& out, const std::vector<ToolPass>& passes, const ProgramSettings& settings);
+
+}  // namespace gcode

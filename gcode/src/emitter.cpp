@@ -1,0 +1,198 @@
+// The program skeleton follows ../shared/gcode.md section 1 (after Autodesk's
+// HAAS post and HAAS training examples): %, O-number with the name, tool
+// comments, safe-start line, units, then per tool: T M06, spindle on at the
+// first hole, G43 H Z with coolant, the full cycle on the first hole, bare X Y
+// after, G80 M09 M05, Z home, M01; at the end Z home before XY, M30, %.
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+#include "gcode/program.h"
+
+namespace gcode {
+
+namespace {
+
+constexpr double kMmPerInch = 25.4;
+
+class Writer {
+ public:
+  Writer(std::ostream& out, const ProgramSettings& s) : out_(out), s_(s) {}
+
+  int coord_decimals() const { return s_.units == Units::Inch ? 4 : 3; }
+  int feed_decimals() const { return s_.units == Units::Inch ? 3 : 1; }
+  double to_units(double mm) const { return s_.units == Units::Inch ? mm / kMmPerInch : mm; }
+  std::string c(double mm) const { return format_number(to_units(mm), coord_decimals()); }
+  std::string f(double mm_min) const { return format_number(to_units(mm_min), feed_decimals()); }
+
+  void line(const std::string& text) { out_ << text << '\n'; }
+
+  std::string z_home() const {
+    switch (s_.dialect) {
+      case Dialect::Fanuc: return "G91 G28 Z0.\nG90";
+      case Dialect::Haas:
+      case Dialect::LinuxCnc: return "G53 G00 Z0.";
+    }
+    return "";
+  }
+
+  std::string dwell(double seconds) const {
+    // HAAS and Fanuc read P without a decimal point as milliseconds; LinuxCNC
+    // reads P as seconds (gcode.md, dialect table).
+    if (s_.dialect == Dialect::LinuxCnc) return "P" + format_number(seconds, 3);
+    return "P" + std::to_string(static_cast<long long>(std::llround(seconds * 1000.0)));
+  }
+
+  std::string label(std::size_t index) const {
+    // The hole's number, shown by the control, so the operator sees where it stopped.
+    if (index <= 99999) return "N" + std::to_string(index) + " ";
+    return "";
+  }
+  std::string trailing_label(std::size_t index) const {
+    if (index <= 99999) return "";
+    return " (H" + std::to_string(index) + ")";
+  }
+
+ private:
+  std::ostream& out_;
+  const ProgramSettings& s_;
+};
+
+std::string upper_comment(std::string text) {
+  // Comments in parentheses cannot nest; keep them short, uppercase and plain.
+  for (char& ch : text) {
+    if (ch == '(' || ch == ')') ch = '/';
+    else if (ch == '\n' || ch == '\r') ch = ' ';
+    else if (static_cast<unsigned char>(ch) >= 128) ch = '?';
+    else ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
+  }
+  if (text.size() > 60) text.resize(60);
+  return text;
+}
+
+}  // namespace
+
+std::string tool_name(const Tool& t) {
+  if (!t.name.empty()) return t.name;
+  return format_number(t.diameter_mm, 3) + " MM DRILL";
+}
+
+const char* to_string(Dialect d) {
+  switch (d) {
+    case Dialect::Haas: return "haas";
+    case Dialect::Fanuc: return "fanuc";
+    case Dialect::LinuxCnc: return "linuxcnc";
+  }
+  return "?";
+}
+
+std::optional<Dialect> dialect_from_string(const std::string& name) {
+  for (Dialect d : {Dialect::Haas, Dialect::Fanuc, Dialect::LinuxCnc}) {
+    if (name == to_string(d)) return d;
+  }
+  return std::nullopt;
+}
+
+const char* to_string(Cycle c) {
+  switch (c) {
+    case Cycle::G81: return "G81";
+    case Cycle::G82: return "G82";
+    case Cycle::G83: return "G83";
+    case Cycle::G73: return "G73";
+  }
+  return "?";
+}
+
+std::optional<Cycle> cycle_from_string(const std::string& name) {
+  for (Cycle c : {Cycle::G81, Cycle::G82, Cycle::G83, Cycle::G73}) {
+    std::string n = to_string(c);
+    if (name == n || name == "g" + n.substr(1) || name == n.substr(1)) return c;
+  }
+  return std::nullopt;
+}
+
+std::string format_number(double value, int decimals) {
+  char buf[64];
+  auto res = std::to_chars(buf, buf + sizeof buf, value, std::chars_format::fixed, decimals);
+  if (res.ec != std::errc()) return "0.";
+  std::string s(buf, res.ptr);
+  if (decimals == 0) s += '.';
+  // "-0.000" is a rounding artefact; a machinist should never read it.
+  if (s[0] == '-' && s.find_first_not_of("-0.") == std::string::npos) s.erase(0, 1);
+  return s;
+}
+
+void write_program(std::ostream& out, const std::vector<ToolPass>& passes, const ProgramSettings& s) {
+  if (s.program_number < 1 || s.program_number > 99999) {
+    throw std::invalid_argument("program number must be 1..99999");
+  }
+  if (!(s.r_plane_mm < s.initial_z_mm)) throw std::invalid_argument("the R plane must lie below the initial Z");
+  Writer w(out, s);
+  std::size_t total = 0;
+  for (const ToolPass& p : passes) total += p.holes.size();
+  if (s.resume_from < 1 || (total > 0 && s.resume_from > total)) {
+    throw std::invalid_argument("--resume-from " + std::to_string(s.resume_from) + " is outside 1.." +
+                                std::to_string(total));
+  }
+
+  w.line("%");
+  char oline[16];
+  std::snprintf(oline, sizeof oline, "O%05d", s.program_number);
+  w.line(std::string(oline) + " (" + upper_comment(s.program_name) + ")");
+  for (const std::string& text : s.header_comments) w.line("(" + upper_comment(text) + ")");
+  if (s.resume_from > 1) w.line("(RESUMED AT HOLE " + std::to_string(s.resume_from) + ")");
+  for (const ToolPass& p : passes) {
+    w.line("(T" + std::to_string(p.tool.number) + " D=" + w.c(p.tool.diameter_mm) + " " +
+           (s.units == Units::Inch ? "IN" : "MM") + " - " + upper_comment(tool_name(p.tool)) + " - " +
+           std::to_string(p.holes.size()) + " HOLES)");
+  }
+  w.line("G00 G17 G40 G49 G80 G90");
+  w.line(s.units == Units::Inch ? "G20" : "G21");
+  w.line(w.z_home());
+
+  for (const ToolPass& p : passes) {
+    // The first hole of this pass that is drilled at all, given --resume-from.
+    std::size_t first = 0;
+    while (first < p.holes.size() && p.index[first] < s.resume_from) ++first;
+    if (first == p.holes.size()) continue;
+    const Tool& t = p.tool;
+    const std::size_t count = p.holes.size() - first;
+    w.line("(T" + std::to_string(t.number) + " " + upper_comment(tool_name(t)) + ", " + std::to_string(count) +
+           " HOLES)");
+    w.line("T" + std::to_string(t.number) + " M06 (" + upper_comment(tool_name(t)) + ")");
+    const aco::Point2& h0 = p.holes[first];
+    w.line("G00 G90 G54 X" + w.c(h0.x) + " Y" + w.c(h0.y) + " S" + std::to_string(t.spindle_rpm) + " M03");
+    char hbuf[16];
+    std::snprintf(hbuf, sizeof hbuf, "H%02d", t.number);
+    w.line("G43 " + std::string(hbuf) + " Z" + w.c(s.initial_z_mm) + " M08");
+    for (std::size_t i = first; i < p.holes.size(); ++i) {
+      const aco::Point2& h = p.holes[i];
+      const bool last = i + 1 == p.holes.size();
+      std::string retract;
+      if (i == first) retract = (s.retract_to_r && !last) ? "G99 " : "G98 ";
+      else if (last && s.retract_to_r) retract = "G98 ";  // the last hole leaves at the initial plane
+      std::string text = w.label(p.index[i]) + retract;
+      if (i == first) {
+        text += std::string(to_string(t.cycle)) + " X" + w.c(h.x) + " Y" + w.c(h.y) + " Z" + w.c(t.depth_mm) + " R" +
+                w.c(s.r_plane_mm);
+        if (t.cycle == Cycle::G83 || t.cycle == Cycle::G73) text += " Q" + w.c(t.peck_mm);
+        if (t.cycle == Cycle::G82) text += " " + w.dwell(t.dwell_s);
+        text += " F" + w.f(t.feed_mm_min);
+      } else {
+        text += "X" + w.c(h.x) + " Y" + w.c(h.y);
+      }
+      w.line(text + w.trailing_label(p.index[i]));
+    }
+    w.line("G80");
+    w.line("M09");
+    w.line("M05");
+    w.line(w.z_home());
+    w.line("M01");
+  }
+  if (s.home) w.line("G00 X" + w.c(s.home->x) + " Y" + w.c(s.home->y));
+  w.line("M30");
+  w.line("%");
+}
+
+}  // namespace gcode

@@ -1,0 +1,52 @@
+#pragma once
+/**
+ * What to order: points in mm, how distance is measured, and the shape of the
+ * route. A drilling job is an open path from where the spindle is; a TSPLIB
+ * instance is a closed tour.
+ *
+ * **Example**:
+ *   aco::Problem p;
+ *   p.points = {{0, 0}, {10, 0}, {10, 10}};
+ *   p.shape = aco::Shape::OpenPath;  p.start = {0, 0};
+ *   double len = aco::route_length(p, {0, 1, 2});  // start → holes
+ */
+#include <optional>
+#include <string>
+
+#include "aco/geometry.h"
+
+namespace aco {
+
+enum class Metric {
+  Euclidean,  // straight-line moves
+  Chebyshev,  // max(|dx|, |dy|): rapids that move each axis independently at the same rate
+  Manhattan,  // |dx| + |dy|: one axis after the other
+  TsplibEuc2d // TSPLIB's EUC_2D: Euclidean rounded to the nearest integer
+};
+
+enum class Shape {
+  ClosedTour,  // return to the first point
+  OpenPath     // from `start` (not a hole) through every point; ends at `end` if set, else anywhere
+};
+
+struct Problem {
+  std::vector<Point2> points;
+  Metric metric = Metric::Euclidean;
+  Shape shape = Shape::ClosedTour;
+  Point2 start{};              // OpenPath only
+  std::optional<Point2> end;   // OpenPath only: a fixed end, e.g. the home position
+};
+
+double distance(Metric metric, Point2 a, Point2 b);
+
+// Length of the route that visits `order`: a closed tour returns to its first
+// point; an open path starts at problem.start and ends at problem.end if set.
+double route_length(const Problem& problem, const Order& order);
+
+// True when `order` visits every point of the problem exactly once.
+bool is_permutation_of(const Problem& problem, const Order& order);
+
+const char* to_string(Metric metric);
+std::optional<Metric> metric_from_string(const std::string& name);
+
+}  // namespace aco

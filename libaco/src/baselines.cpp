@@ -1,0 +1,290 @@
+// Baseline orders for reports and benchmarks, all O(n log n)-ish so that they
+// run on a million holes: nearest neighbour walks a bucket grid instead of
+// scanning every unvisited hole.
+#include "aco/baselines.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <array>
+#include <functional>
+#include <numeric>
+
+#include "candidates.h"
+#include "local_search.h"
+#include "space.h"
+
+namespace aco {
+
+namespace detail {
+
+namespace {
+
+class BucketGrid {
+ public:
+  explicit BucketGrid(const Space& s) : s_(s) {
+    const HoleIndex n = s.holes();
+    double minx = std::numeric_limits<double>::infinity(), miny = minx, maxx = -minx, maxy = -minx;
+    for (HoleIndex i = 0; i < n; ++i) {
+      minx = std::min(minx, s.point(i).x);
+      maxx = std::max(maxx, s.point(i).x);
+      miny = std::min(miny, s.point(i).y);
+      maxy = std::max(maxy, s.point(i).y);
+    }
+    x0_ = minx;
+    y0_ = miny;
+    const double w = std::max(maxx - minx, 1e-9), h = std::max(maxy - miny, 1e-9);
+    // About two holes a cell.
+    cell_ = std::max(std::sqrt(w * h / std::max<double>(n, 1) * 2.0), std::max(w, h) / 4096.0);
+    nx_ = static_cast<int>(std::min(4096.0, std::floor(w / cell_) + 1));
+    ny_ = static_cast<int>(std::min(4096.0, std::floor(h / cell_) + 1));
+    cells_.assign(static_cast<std::size_t>(nx_) * ny_, {});
+    slot_.assign(n, 0);
+    for (HoleIndex i = 0; i < n; ++i) insert(i);
+    alive_.resize(n);
+    std::iota(alive_.begin(), alive_.end(), 0);
+    alive_at_.resize(n);
+    std::iota(alive_at_.begin(), alive_at_.end(), 0);
+  }
+
+  void remove(HoleIndex i) {
+    auto& c = cells_[cell_of(s_.point(i))];
+    const HoleIndex at = slot_[i];
+    c[at] = c.back();
+    slot_[c[at]] = at;
+    c.pop_back();
+    const HoleIndex a = alive_at_[i];
+    alive_[a] = alive_.back();
+    alive_at_[alive_[a]] = a;
+    alive_.pop_back();
+  }
+
+  bool empty() const { return alive_.empty(); }
+
+  // Nearest remaining hole to p (ties to the lower index), in the space's metric.
+  HoleIndex nearest(Point2 from, const std::function<double(HoleIndex)>& dist) const {
+    const int cx = clampx(from.x), cy = clampy(from.y);
+    HoleIndex best = UINT32_MAX;
+    double best_d = std::numeric_limits<double>::infinity();
+    auto consider = [&](HoleIndex h) {
+      const double d = dist(h);
+      if (d < best_d || (d == best_d && h < best)) {
+        best_d = d;
+        best = h;
+      }
+    };
+    std::size_t scanned_cells = 0;
+    for (int r = 0;; ++r) {
+      // Scanning the ring costs ~8r cells; once that exceeds what is left, a plain scan is cheaper.
+      if (scanned_cells + 8 * static_cast<std::size_t>(r) + 1 > alive_.size() * 4 && r > 1) {
+        for (HoleIndex h : alive_) consider(h);
+        return best;
+      }
+      for (int y = cy - r; y <= cy + r; ++y) {
+        if (y < 0 || y >= ny_) continue;
+        const bool edge_row = (y == cy - r || y == cy + r);
+        for (int x = cx - r; x <= cx + r; x += (edge_row ? 1 : 2 * r)) {
+          if (x >= 0 && x < nx_) {
+            for (HoleIndex h : cells_[static_cast<std::size_t>(y) * nx_ + x]) consider(h);
+            ++scanned_cells;
+          }
+          if (!edge_row && r == 0) break;
+        }
+      }
+      // Every hole outside ring r is at least r cells away (in any of our metrics).
+      if (best != UINT32_MAX && best_d <= r * cell_) return best;
+      if (r > nx_ + ny_) return best;
+    }
+  }
+
+ private:
+  int clampx(double x) const { return std::clamp(static_cast<int>((x - x0_) / cell_), 0, nx_ - 1); }
+  int clampy(double y) const { return std::clamp(static_cast<int>((y - y0_) / cell_), 0, ny_ - 1); }
+  std::size_t cell_of(Point2 p) const { return static_cast<std::size_t>(clampy(p.y)) * nx_ + clampx(p.x); }
+  void insert(HoleIndex i) {
+    auto& c = cells_[cell_of(s_.point(i))];
+    slot_[i] = static_cast<HoleIndex>(c.size());
+    c.push_back(i);
+  }
+
+  const Space& s_;
+  double x0_ = 0, y0_ = 0, cell_ = 1;
+  int nx_ = 1, ny_ = 1;
+  std::vector<std::vector<HoleIndex>> cells_;
+  std::vector<HoleIndex> slot_;
+  std::vector<HoleIndex> alive_, alive_at_;
+};
+
+}  // namespace
+
+Order nearest_neighbor_order(const Space& space, const Candidates&) {
+  const HoleIndex n = space.holes();
+  Order order;
+  order.reserve(n);
+  if (n == 0) return order;
+  BucketGrid grid(space);
+  HoleIndex cur;
+  if (space.open()) {
+    cur = grid.nearest(space.start(), [&](HoleIndex h) { return space.e(space.virtual_node(), h); });
+  } else {
+    cur = 0;
+  }
+  grid.remove(cur);
+  order.push_back(cur);
+  while (!grid.empty()) {
+    const HoleIndex from = cur;
+    cur = grid.nearest(space.point(from), [&](HoleIndex h) { return space.d(from, h); });
+    grid.remove(cur);
+    order.push_back(cur);
+  }
+  return order;
+}
+
+}  // namespace detail
+
+namespace {
+
+std::vector<HoleIndex> to_route(const detail::Space& space, const Order& order) {
+  std::vector<HoleIndex> route;
+  route.reserve(order.size() + 1);
+  if (space.open()) route.push_back(space.virtual_node());
+  route.insert(route.end(), order.begin(), order.end());
+  return route;
+}
+
+Order from_route(const detail::Space& space, const std::vector<HoleIndex>& route) {
+  Order o;
+  o.reserve(route.size());
+  for (HoleIndex h : route) {
+    if (h < space.holes()) o.push_back(h);
+  }
+  return o;
+}
+
+}  // namespace
+
+Order input_order(const Problem& problem) {
+  Order o(problem.points.size());
+  std::iota(o.begin(), o.end(), 0);
+  return o;
+}
+
+Order nearest_neighbor(const Problem& problem) {
+  detail::Space space(problem);
+  return detail::nearest_neighbor_order(space, {});
+}
+
+Order improve(const Problem& problem, Order order, bool or_opt) {
+  detail::Space space(problem);
+  detail::Candidates cand = detail::build_candidates(space, 10);
+  detail::LocalSearcher ls(space, cand);
+  std::vector<HoleIndex> route = to_route(space, order);
+  ls.improve(route, or_opt);
+  return from_route(space, route);
+}
+
+Order nearest_neighbor_2opt(const Problem& problem) { return improve(problem, nearest_neighbor(problem), false); }
+
+Order greedy_edge(const Problem& problem) {
+  detail::Space space(problem);
+  const HoleIndex n = space.holes();
+  if (n < 3) return nearest_neighbor(problem);
+  detail::Candidates cand = detail::build_candidates(space, 10);
+  struct Edge {
+    double d;
+    HoleIndex a, b;
+  };
+  std::vector<Edge> edges;
+  edges.reserve(static_cast<std::size_t>(n) * cand.k);
+  for (HoleIndex i = 0; i < n; ++i) {
+    for (int r = 0; r < cand.k; ++r) {
+      const HoleIndex j = cand.of(i)[r];
+      if (i < j) edges.push_back({space.d(i, j), i, j});
+    }
+  }
+  std::sort(edges.begin(), edges.end(), [](const Edge& x, const Edge& y) {
+    return x.d < y.d || (x.d == y.d && (x.a < y.a || (x.a == y.a && x.b < y.b)));
+  });
+  std::vector<HoleIndex> parent(n);
+  std::iota(parent.begin(), parent.end(), 0);
+  auto find = [&](HoleIndex x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  std::vector<std::array<HoleIndex, 2>> adj(n, {UINT32_MAX, UINT32_MAX});
+  auto degree = [&](HoleIndex x) { return (adj[x][0] != UINT32_MAX) + (adj[x][1] != UINT32_MAX); };
+  for (const Edge& e : edges) {
+    if (degree(e.a) >= 2 || degree(e.b) >= 2) continue;
+    const HoleIndex ra = find(e.a), rb = find(e.b);
+    if (ra == rb) continue;  // would close a cycle early
+    parent[ra] = rb;
+    adj[e.a][degree(e.a)] = e.b;
+    adj[e.b][degree(e.b)] = e.a;
+  }
+  // Chain the fragments: from the current end, walk to the nearest free fragment end.
+  std::vector<char> used(n, 0);
+  std::vector<HoleIndex> ends;
+  for (HoleIndex i = 0; i < n; ++i) {
+    if (degree(i) < 2) ends.push_back(i);
+  }
+  Order order;
+  order.reserve(n);
+  auto walk = [&](HoleIndex from) {
+    HoleIndex prev = UINT32_MAX, cur = from;
+    while (cur != UINT32_MAX && !used[cur]) {
+      used[cur] = 1;
+      order.push_back(cur);
+      HoleIndex next = UINT32_MAX;
+      for (HoleIndex x : adj[cur]) {
+        if (x != UINT32_MAX && x != prev && !used[x]) next = x;
+      }
+      prev = cur;
+      cur = next;
+    }
+  };
+  Point2 at = space.open() ? problem.start : space.point(ends.empty() ? 0 : ends[0]);
+  while (order.size() < n) {
+    HoleIndex best = UINT32_MAX;
+    double best_d = std::numeric_limits<double>::infinity();
+    for (HoleIndex e : ends) {
+      if (used[e]) continue;
+      const double d = distance(problem.metric, at, space.point(e));
+      if (d < best_d) {
+        best_d = d;
+        best = e;
+      }
+    }
+    if (best == UINT32_MAX) break;
+    walk(best);
+    at = space.point(order.back());
+  }
+  return order;
+}
+
+Order raster(const Problem& problem, double row_height) {
+  const std::size_t n = problem.points.size();
+  Order o = input_order(problem);
+  if (n == 0) return o;
+  if (!(row_height > 0.0)) {
+    double minx = 1e300, maxx = -1e300, miny = 1e300, maxy = -1e300;
+    for (const Point2& p : problem.points) {
+      minx = std::min(minx, p.x);
+      maxx = std::max(maxx, p.x);
+      miny = std::min(miny, p.y);
+      maxy = std::max(maxy, p.y);
+    }
+    row_height = std::max(std::sqrt((maxx - minx) * (maxy - miny) / static_cast<double>(n)), 1e-6);
+  }
+  double miny = 1e300;
+  for (const Point2& p : problem.points) miny = std::min(miny, p.y);
+  auto row = [&](HoleIndex h) { return static_cast<long long>(std::floor((problem.points[h].y - miny) / row_height)); };
+  std::stable_sort(o.begin(), o.end(), [&](HoleIndex a, HoleIndex b) {
+    const long long ra = row(a), rb = row(b);
+    if (ra != rb) return ra < rb;
+    const double xa = problem.points[a].x, xb = problem.points[b].x;
+    return (ra % 2 == 0) ? xa < xb : xa > xb;
+  });
+  return o;
+}
+
+}  // namespace aco

@@ -1,0 +1,469 @@
+// The colony: every iteration the ants build routes in parallel (one ant per
+// worker, each writing only its own slot), a barrier, then a deterministic
+// reduction by (length, ant index) and the pheromone update on one thread.
+//
+// Pheromone lives on candidate edges only (n x k), with one shared value for
+// every other edge, so memory is O(n k) at any size. For small problems the
+// candidate list holds every other hole, which makes the thesis's Ant System
+// exactly the published one: p_ij ∝ tau_ij^alpha * eta_ij^beta over all
+// unvisited holes.
+//
+// References: Dorigo, Maniezzo & Colorni 1996 (Ant System); Stützle & Hoos 2000
+// (MAX-MIN Ant System, trail limits and the u_gb schedule); Dorigo & Gambardella
+// 1997 (Ant Colony System); Stützle's ACOTSP for default parameters.
+#include <omp.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+#include "aco/baselines.h"
+#include "aco/error.h"
+#include "aco/solve.h"
+#include "candidates.h"
+#include "local_search.h"
+#include "parallel.h"
+#include "rng.h"
+#include "space.h"
+
+namespace aco {
+
+namespace detail {
+Order nearest_neighbor_order(const Space& space, const Candidates& cand);
+}
+
+namespace {
+
+using detail::Candidates;
+using detail::LocalSearcher;
+using detail::Rng;
+using detail::Space;
+
+// Up to this many holes the candidate list is every other hole (the exact Ant System).
+constexpr std::size_t kFullListLimit = 800;
+
+class Clock {
+ public:
+  double seconds() const {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count();
+  }
+
+ private:
+  std::chrono::steady_clock::time_point t0_ = std::chrono::steady_clock::now();
+};
+
+struct AntWork {
+  std::vector<HoleIndex> route;       // array route, V at 0 for an open path
+  std::vector<HoleIndex> unvisited;   // swap-remove list
+  std::vector<HoleIndex> where;       // index of each hole in `unvisited`
+  std::vector<double> weight;         // roulette weights over candidates
+  double length = 0.0;
+};
+
+class Colony {
+ public:
+  Colony(const Problem& problem, const Params& params)
+      : problem_(problem), p_(params), space_(problem), n_(space_.holes()) {
+    const int k = n_ <= kFullListLimit ? static_cast<int>(n_) - 1 : p_.candidates;
+    cand_ = detail::build_candidates(space_, k);
+    k_ = cand_.k;
+    tau_.assign(static_cast<std::size_t>(n_) * k_, 0.0);
+    choice_.assign(tau_.size(), 0.0);
+    eta_beta_.assign(tau_.size(), 0.0);
+    for (HoleIndex i = 0; i < n_; ++i) {
+      const HoleIndex* c = cand_.of(i);
+      for (int r = 0; r < k_; ++r) eta_beta_[idx(i, r)] = std::pow(eta(space_.d(i, c[r])), p_.beta);
+    }
+    if (k_ == static_cast<int>(n_) - 1 && n_ > 1) {
+      rank_.assign(static_cast<std::size_t>(n_) * n_, -1);
+      for (HoleIndex i = 0; i < n_; ++i) {
+        for (int r = 0; r < k_; ++r) rank_[static_cast<std::size_t>(i) * n_ + cand_.of(i)[r]] = r;
+      }
+    }
+  }
+
+  Solution run();
+
+ private:
+  std::size_t idx(HoleIndex i, int r) const { return static_cast<std::size_t>(i) * k_ + r; }
+  static double eta(double d) { return 1.0 / std::max(d, 1e-9); }
+  int rank_of(HoleIndex i, HoleIndex j) const {
+    if (!rank_.empty()) return rank_[static_cast<std::size_t>(i) * n_ + j];
+    const HoleIndex* c = cand_.of(i);
+    for (int r = 0; r < k_; ++r) {
+      if (c[r] == j) return r;
+    }
+    return -1;
+  }
+  void set_all_tau(double v) {
+    std::fill(tau_.begin(), tau_.end(), v);
+    tau_other_ = v;
+  }
+  void refresh_choice() {
+    const double a = p_.alpha;
+    for (std::size_t e = 0; e < tau_.size(); ++e) choice_[e] = std::pow(tau_[e], a) * eta_beta_[e];
+    choice_other_pow_ = std::pow(tau_other_, a);
+  }
+  void construct(AntWork& w, Rng& rng, bool acs);
+  HoleIndex choose_next(HoleIndex cur, AntWork& w, Rng& rng, bool acs);
+  HoleIndex nearest_unvisited(HoleIndex cur, const AntWork& w) const;
+  void deposit(const std::vector<HoleIndex>& route, double amount);
+  void deposit_edge(HoleIndex a, HoleIndex b, double amount);
+  void evaporate(double factor) {
+    for (double& t : tau_) t *= factor;
+    tau_other_ *= factor;
+  }
+  Order to_order(const std::vector<HoleIndex>& route) const;
+
+  const Problem& problem_;
+  Params p_;
+  Space space_;
+  HoleIndex n_;
+  Candidates cand_;
+  int k_ = 0;
+  std::vector<double> tau_, choice_, eta_beta_;
+  std::vector<int> rank_;  // full-list mode: rank of j in i's list
+  double tau_other_ = 0.0;
+  double choice_other_pow_ = 0.0;
+  double tau0_ = 0.0;
+};
+
+HoleIndex Colony::nearest_unvisited(HoleIndex cur, const AntWork& w) const {
+  // Every candidate is visited: take the nearest unvisited hole, which is the
+  // argmax of tau^alpha * eta^beta when all non-candidate edges share one tau.
+  HoleIndex best = w.unvisited[0];
+  double best_d = std::numeric_limits<double>::infinity();
+  for (HoleIndex h : w.unvisited) {
+    const double d = space_.e(cur, h);
+    if (d < best_d || (d == best_d && h < best)) {
+      best_d = d;
+      best = h;
+    }
+  }
+  return best;
+}
+
+HoleIndex Colony::choose_next(HoleIndex cur, AntWork& w, Rng& rng, bool acs) {
+  if (cur == n_) {
+    // Leaving the open path's start: no pheromone is kept on V's edges, so
+    // choose by eta^beta alone over all unvisited holes.
+    double total = 0.0;
+    w.weight.resize(w.unvisited.size());
+    for (std::size_t u = 0; u < w.unvisited.size(); ++u) {
+      w.weight[u] = std::pow(eta(space_.e(cur, w.unvisited[u])), p_.beta);
+      total += w.weight[u];
+    }
+    double r = rng.uniform() * total;
+    for (std::size_t u = 0; u < w.unvisited.size(); ++u) {
+      r -= w.weight[u];
+      if (r < 0.0) return w.unvisited[u];
+    }
+    return w.unvisited.back();
+  }
+  const HoleIndex* c = cand_.of(cur);
+  const double* ch = choice_.data() + idx(cur, 0);
+  w.weight.resize(static_cast<std::size_t>(k_));
+  double total = 0.0;
+  int best_r = -1;
+  for (int r = 0; r < k_; ++r) {
+    const bool free = w.where[c[r]] != UINT32_MAX;
+    const double v = free ? ch[r] : 0.0;
+    w.weight[r] = v;
+    total += v;
+    if (free && (best_r < 0 || v > w.weight[best_r])) best_r = r;
+  }
+  if (best_r < 0) return nearest_unvisited(cur, w);
+  if (acs && rng.uniform() < p_.q0) return c[best_r];
+  if (!(total > 0.0)) return c[best_r];  // underflow of tiny weights: fall back to the best
+  double r = rng.uniform() * total;
+  for (int q = 0; q < k_; ++q) {
+    r -= w.weight[q];
+    if (r < 0.0 && w.weight[q] > 0.0) return c[q];
+  }
+  return c[best_r];
+}
+
+void Colony::construct(AntWork& w, Rng& rng, bool acs) {
+  w.route.clear();
+  w.unvisited.resize(n_);
+  w.where.resize(n_);
+  std::iota(w.unvisited.begin(), w.unvisited.end(), 0);
+  std::iota(w.where.begin(), w.where.end(), 0);
+  auto visit = [&w](HoleIndex h) {
+    const HoleIndex at = w.where[h];
+    const HoleIndex last = w.unvisited.back();
+    w.unvisited[at] = last;
+    w.where[last] = at;
+    w.unvisited.pop_back();
+    w.where[h] = UINT32_MAX;
+    w.route.push_back(h);
+  };
+  HoleIndex cur;
+  if (space_.open()) {
+    w.route.push_back(n_);
+    cur = n_;
+  } else {
+    cur = static_cast<HoleIndex>(rng.below(n_));  // the thesis: ants start at random holes
+    visit(cur);
+  }
+  while (!w.unvisited.empty()) {
+    const HoleIndex next = choose_next(cur, w, rng, acs);
+    visit(next);
+    cur = next;
+  }
+}
+
+void Colony::deposit_edge(HoleIndex a, HoleIndex b, double amount) {
+  if (a >= n_ || b >= n_) return;  // V's edges carry no pheromone
+  int r = rank_of(a, b);
+  if (r >= 0) tau_[idx(a, r)] += amount;
+  r = rank_of(b, a);
+  if (r >= 0) tau_[idx(b, r)] += amount;
+}
+
+void Colony::deposit(const std::vector<HoleIndex>& route, double amount) {
+  const std::size_t m = route.size();
+  for (std::size_t i = 0; i + 1 < m; ++i) deposit_edge(route[i], route[i + 1], amount);
+  if (!space_.open() && m > 2) deposit_edge(route[m - 1], route[0], amount);
+}
+
+Order Colony::to_order(const std::vector<HoleIndex>& route) const {
+  Order o;
+  o.reserve(n_);
+  for (HoleIndex h : route) {
+    if (h < n_) o.push_back(h);
+  }
+  return o;
+}
+
+Solution Colony::run() {
+  Clock clock;
+  Solution sol;
+  sol.algorithm = p_.algorithm;
+  sol.ants = p_.ants;
+  sol.threads = p_.threads;
+  sol.thread_busy_s.assign(static_cast<std::size_t>(p_.threads), 0.0);
+
+  // Nearest neighbour, improved when local search is on, starts the best-so-far
+  // and gives C_nn for the initial trail.
+  Order nn = detail::nearest_neighbor_order(space_, cand_);
+  std::vector<HoleIndex> best_route;
+  if (space_.open()) best_route.push_back(n_);
+  best_route.insert(best_route.end(), nn.begin(), nn.end());
+  const double c_nn = std::max(space_.route_cost(best_route), 1e-9);
+  const bool use_ls = p_.local_search != LocalSearch::None;
+  const bool or_opt = p_.local_search == LocalSearch::TwoOptOrOpt;
+  if (use_ls) {
+    LocalSearcher ls(space_, cand_);
+    ls.improve(best_route, or_opt);
+  }
+  double best_len = space_.route_cost(best_route);
+  sol.trace.push_back({0, clock.seconds(), best_len});
+
+  const double rho = p_.rho;
+  const double m = p_.ants;
+  double tau_max = 0.0, tau_min = 0.0;
+  auto mmas_limits = [&](double best) {
+    tau_max = 1.0 / (rho * best);
+    // With local search ACOTSP uses tau_min = tau_max / (2n); without, the
+    // p_best = 0.05 formula of Stützle & Hoos 2000, eq. 11.
+    if (use_ls) {
+      tau_min = tau_max / (2.0 * n_);
+    } else {
+      const double p_root = std::pow(0.05, 1.0 / n_);
+      const double avg = std::max(2.0, n_ / 2.0);
+      tau_min = std::min(tau_max, tau_max * (1.0 - p_root) / ((avg - 1.0) * p_root));
+    }
+  };
+  switch (p_.algorithm) {
+    case Algorithm::AntSystem: tau0_ = m / c_nn; break;  // the thesis: tau0 = m / C_nn
+    case Algorithm::MaxMinAntSystem:
+      mmas_limits(c_nn);
+      tau0_ = tau_max;
+      break;
+    case Algorithm::AntColonySystem: tau0_ = 1.0 / (n_ * c_nn); break;
+  }
+  set_all_tau(tau0_);
+  refresh_choice();
+
+  const bool acs = p_.algorithm == Algorithm::AntColonySystem;
+  std::vector<AntWork> work(static_cast<std::size_t>(p_.ants));
+  std::vector<LocalSearcher> searchers;
+  if (use_ls) {
+    searchers.reserve(static_cast<std::size_t>(p_.ants));
+    for (int k = 0; k < p_.ants; ++k) searchers.emplace_back(space_, cand_);
+  }
+
+  int since_improvement = 0;
+  int since_restart = 0;
+  std::vector<HoleIndex> restart_best = best_route;
+  double restart_best_len = best_len;
+  sol.stop_reason = "iterations";
+  int it = 0;
+  for (it = 1; it <= p_.iterations; ++it) {
+    detail::parallel_slots(p_.ants, p_.threads, sol.thread_busy_s, [&](int k) {
+      Rng rng(p_.seed, static_cast<std::uint64_t>(it), static_cast<std::uint64_t>(k));
+      AntWork& w = work[static_cast<std::size_t>(k)];
+      construct(w, rng, acs);
+      if (use_ls) searchers[static_cast<std::size_t>(k)].improve(w.route, or_opt);
+      w.length = space_.route_cost(w.route);
+    });
+    // Deterministic reduction: shortest, ties to the lowest ant index.
+    int ib = 0;
+    for (int k = 1; k < p_.ants; ++k) {
+      if (work[k].length < work[ib].length) ib = k;
+    }
+    const double ib_len = work[ib].length;
+    ++since_improvement;
+    ++since_restart;
+    if (ib_len < best_len - 1e-9) {
+      best_len = ib_len;
+      best_route = work[ib].route;
+      since_improvement = 0;
+      sol.trace.push_back({it, clock.seconds(), best_len});
+    }
+    if (ib_len < restart_best_len - 1e-9) {
+      restart_best_len = ib_len;
+      restart_best = work[ib].route;
+      since_restart = 0;
+    }
+
+    // Pheromone update, on one thread, after the barrier.
+    switch (p_.algorithm) {
+      case Algorithm::AntSystem:
+        evaporate(1.0 - rho);
+        for (const AntWork& w : work) deposit(w.route, 1.0 / std::max(w.length, 1e-9));
+        break;
+      case Algorithm::MaxMinAntSystem: {
+        evaporate(1.0 - rho);
+        // u_gb schedule (Stützle & Hoos 2000, with local search): the best
+        // since the last restart deposits ever more often as the run goes on.
+        const int u_gb = since_restart < 25 ? 25 : since_restart < 75 ? 5 : since_restart < 125 ? 3 : since_restart < 250 ? 2 : 1;
+        const bool use_gb = (it % u_gb) == 0;
+        const auto& route = use_gb ? restart_best : work[ib].route;
+        const double len = use_gb ? restart_best_len : ib_len;
+        mmas_limits(best_len);
+        deposit(route, 1.0 / std::max(len, 1e-9));
+        for (double& t : tau_) t = std::clamp(t, tau_min, tau_max);
+        tau_other_ = std::clamp(tau_other_, tau_min, tau_max);
+        // Stagnation: reinitialise the trails (the best-so-far is kept).
+        if (since_restart >= std::max(50, p_.stall_iterations / 2)) {
+          set_all_tau(tau_max);
+          since_restart = 0;
+          restart_best_len = std::numeric_limits<double>::infinity();
+        }
+        break;
+      }
+      case Algorithm::AntColonySystem: {
+        // Local update, deferred to the barrier and applied in ant order so the
+        // result does not depend on thread timing: tau = (1-xi) tau + xi tau0.
+        constexpr double xi = 0.1;
+        for (const AntWork& w : work) {
+          const std::size_t mm = w.route.size();
+          for (std::size_t i = 0; i < mm; ++i) {
+            const HoleIndex a = w.route[i], b = w.route[(i + 1) % mm];
+            if (a >= n_ || b >= n_) continue;
+            for (auto [x, y] : {std::pair{a, b}, std::pair{b, a}}) {
+              const int r = rank_of(x, y);
+              if (r >= 0) tau_[idx(x, r)] = (1.0 - xi) * tau_[idx(x, r)] + xi * tau0_;
+            }
+          }
+        }
+        // Global update on the best-so-far edges only.
+        const std::size_t mm = best_route.size();
+        for (std::size_t i = 0; i < mm; ++i) {
+          const HoleIndex a = best_route[i], b = best_route[(i + 1) % mm];
+          if (a >= n_ || b >= n_ || (space_.open() && i + 1 == mm)) continue;
+          for (auto [x, y] : {std::pair{a, b}, std::pair{b, a}}) {
+            const int r = rank_of(x, y);
+            if (r >= 0) tau_[idx(x, r)] = (1.0 - rho) * tau_[idx(x, r)] + rho / best_len;
+          }
+        }
+        break;
+      }
+    }
+    refresh_choice();
+
+    const double now = clock.seconds();
+    if (p_.on_iteration) p_.on_iteration(Progress{it, now, best_len});
+    if (p_.time_limit_s > 0.0 && now >= p_.time_limit_s) {
+      sol.stop_reason = "time limit";
+      break;
+    }
+    if (p_.stall_iterations > 0 && since_improvement >= p_.stall_iterations) {
+      sol.stop_reason = "stalled";
+      break;
+    }
+  }
+  sol.iterations = std::min(it, p_.iterations);
+  sol.order = to_order(best_route);
+  sol.length = route_length(problem_, sol.order);
+  sol.wall_s = clock.seconds();
+  return sol;
+}
+
+}  // namespace
+
+Params resolve(const Params& in, std::size_t n) {
+  Params p = in;
+  const bool ls = p.local_search != LocalSearch::None;
+  switch (p.algorithm) {
+    case Algorithm::AntSystem:
+      if (p.beta < 0) p.beta = 4.0;  // the thesis's sets use 4 and 4.5
+      if (p.rho < 0) p.rho = 0.5;
+      if (p.ants <= 0) p.ants = static_cast<int>(std::clamp<std::size_t>(n, 1, 100));
+      break;
+    case Algorithm::MaxMinAntSystem:
+      if (p.beta < 0) p.beta = 2.0;
+      if (p.rho < 0) p.rho = ls ? 0.2 : 0.02;
+      if (p.ants <= 0) p.ants = ls ? 10 : static_cast<int>(std::clamp<std::size_t>(n, 1, 100));
+      break;
+    case Algorithm::AntColonySystem:
+      if (p.beta < 0) p.beta = 2.0;
+      if (p.rho < 0) p.rho = 0.1;
+      if (p.ants <= 0) p.ants = 10;
+      break;
+  }
+  if (p.candidates <= 0) p.candidates = ls ? 12 : 20;
+  if (p.iterations <= 0) p.iterations = p.time_limit_s > 0 ? std::numeric_limits<int>::max() : 300;
+  if (p.stall_iterations == 0) p.stall_iterations = p.time_limit_s > 0 ? -1 : 100;
+  if (p.threads <= 0) p.threads = std::max(1, omp_get_num_procs());
+  return p;
+}
+
+Solution solve(const Problem& problem, const Params& params) {
+  params.validate();
+  const std::size_t n = problem.points.size();
+  for (const Point2& pt : problem.points) {
+    if (!std::isfinite(pt.x) || !std::isfinite(pt.y)) throw InputError("a point has a non-finite coordinate");
+  }
+  Params p = resolve(params, n);
+  if (n <= 3) {
+    // Nothing to search: try every order of up to 3 points.
+    Solution s;
+    s.algorithm = p.algorithm;
+    s.threads = p.threads;
+    s.ants = p.ants;
+    s.thread_busy_s.assign(static_cast<std::size_t>(p.threads), 0.0);
+    s.stop_reason = "trivial";
+    Order o(n);
+    std::iota(o.begin(), o.end(), 0);
+    s.order = o;
+    s.length = route_length(problem, o);
+    while (std::next_permutation(o.begin(), o.end())) {
+      const double len = route_length(problem, o);
+      if (len < s.length - 1e-12) {
+        s.length = len;
+        s.order = o;
+      }
+    }
+    s.trace.push_back({0, 0.0, s.length});
+    return s;
+  }
+  Colony colony(problem, p);
+  return colony.run();
+}
+
+}  // namespace aco

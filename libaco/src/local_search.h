@@ -1,0 +1,44 @@
+#pragma once
+// 2-opt and Or-opt on an array route with neighbour lists and don't-look bits
+// (Bentley 1992; Johnson & McGeoch 1997, "The TSP: a case study in local
+// optimization"). The route is a cycle over Space::route_size() nodes whose
+// position 0 never moves, so an open path's virtual node V keeps its place and
+// its direction-dependent edges stay right.
+#include <vector>
+
+#include "candidates.h"
+#include "space.h"
+
+namespace aco::detail {
+
+class LocalSearcher {
+ public:
+  LocalSearcher(const Space& space, const Candidates& candidates);
+
+  // Improves `route` in place until no move gains; returns the gain.
+  // `or_opt` adds segment moves of 1 to 3 holes to the 2-opt moves.
+  double improve(std::vector<HoleIndex>& route, bool or_opt);
+
+ private:
+  bool try_two_opt(HoleIndex a);
+  bool try_or_opt(HoleIndex a);
+  void reverse(std::size_t i, std::size_t j);  // reverse positions i+1..j
+  void move_segment(std::size_t s, std::size_t len, std::size_t q, bool reversed);
+  void push(HoleIndex node);
+  std::size_t succ(std::size_t i) const { return i + 1 == m_ ? 0 : i + 1; }
+  std::size_t pred(std::size_t i) const { return i == 0 ? m_ - 1 : i - 1; }
+  double cost_at(std::size_t i) const { return space_.e(route_[i], route_[succ(i)]); }
+  double two_opt_gain(std::size_t i, std::size_t j) const;
+  void apply_two_opt(std::size_t x, std::size_t y);
+
+  const Space& space_;
+  const Candidates& cand_;
+  std::vector<HoleIndex> route_;
+  std::vector<std::size_t> pos_;
+  std::vector<HoleIndex> queue_;
+  std::vector<char> queued_;
+  std::size_t head_ = 0;
+  std::size_t m_ = 0;
+};
+
+}  // namespace aco::detail

@@ -1,0 +1,221 @@
+// acodrill end to end, as a shop engineer and a CAM pipeline use it: the
+// contract's commands, outputs and exit codes (../shared/interface.md).
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "gcode/interpreter.h"
+#include "test_util.h"
+
+using testutil::acodrill_run;
+using testutil::data;
+using testutil::shell_quote;
+using testutil::slurp;
+using testutil::spit;
+using testutil::TempDir;
+
+namespace {
+
+std::vector<std::string> samples() {
+  std::vector<std::string> out;
+  for (const auto& e : std::filesystem::directory_iterator(testutil::source_dir() + "/samples")) {
+    if (e.path().extension() == ".dxf") out.push_back(e.path().string());
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+std::string q(const std::string& s) { return shell_quote(s); }
+
+}  // namespace
+
+TEST(cli_test, every_sample_is_drilled_once_per_hole_and_verify_agrees) {
+  TempDir t;
+  for (const std::string& sample : samples()) {
+    const std::string nc = t / "p.nc", json = t / "r.json";
+    auto r = acodrill_run("plan " + q(sample) + " -o " + q(nc) + " --report " + q(json) + " --quiet");
+    ASSERT_EQ(r.code, 0) << r.err << " in sample " << sample;
+    EXPECT_EQ(r.err, "") << "quiet on success";
+    // Read the program back: one drilling position per sample hole.
+    const aco::HoleSet expected =
+        testutil::read_holes_csv(slurp(sample.substr(0, sample.size() - 4) + ".holes.csv"));
+    gcode::Interpretation run = gcode::interpret(slurp(nc));
+    ASSERT_EQ(run.holes.size(), expected.size()) << " in sample " << sample;
+    auto v = acodrill_run("verify " + q(nc) + " --holes " + q(sample));
+    EXPECT_EQ(v.code, 0) << v.out << " in sample " << sample;
+    // The report agrees with the program and with a recomputation.
+    auto report = nlohmann::json::parse(slurp(json));
+    EXPECT_EQ(report["holes"].get<std::size_t>(), expected.size());
+    const double optimized = report["travel_mm"]["optimized"].get<double>();
+    EXPECT_LE(optimized, report["travel_mm"]["nearest_neighbor"].get<double>() + 1e-6) << sample;
+    EXPECT_LE(optimized, report["travel_mm"]["input_order"].get<double>() + 1e-6) << sample;
+    EXPECT_NEAR(optimized, run.rapid_xy_mm, 0.01 * expected.size() + 0.01) << "report vs the program's rapids, " << sample;
+    EXPECT_GT(report["machining_time_s"]["optimized"].get<double>(), 0.0);
+    std::size_t tool_holes = 0;
+    for (const auto& tool : report["tools"]) tool_holes += tool["holes"].get<std::size_t>();
+    EXPECT_EQ(tool_holes, expected.size());
+    for (const char* key : {"algorithm", "threads", "seed", "iterations", "wall_s"}) {
+      EXPECT_TRUE(report["solver"].contains(key)) << key;
+    }
+  }
+}
+
+TEST(cli_test, program_to_stdout_equals_the_file_and_threads_do_not_change_it) {
+  TempDir t;
+  const std::string sample = testutil::source_dir() + "/samples/pcb_mixed.dxf";
+  ASSERT_EQ(acodrill_run("plan " + q(sample) + " -o " + q(t / "a.nc") + " -q --threads 1").code, 0);
+  ASSERT_EQ(acodrill_run("plan " + q(sample) + " -o " + q(t / "b.nc") + " -q --threads 2").code, 0);
+  auto out = acodrill_run("plan " + q(sample) + " -o - --threads 2");
+  ASSERT_EQ(out.code, 0);
+  EXPECT_EQ(slurp(t / "a.nc"), slurp(t / "b.nc"));
+  EXPECT_EQ(out.out, slurp(t / "a.nc")) << "-o - writes the program and nothing else to stdout";
+  EXPECT_THAT(out.err, ::testing::HasSubstr("optimized"));
+}
+
+TEST(cli_test, holes_prints_the_contract_csv) {
+  auto r = acodrill_run("holes " + q(data("real-dxf/librecad_arrayed_holes_inch.dxf")) + " --format csv");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(r.out, slurp(data("real-dxf/librecad_arrayed_holes_inch.holes.csv")));
+  EXPECT_EQ(testutil::count_lines(r.err), 1) << "one summary line: " << r.err;
+  auto stdin_run = acodrill_run("holes - --format csv -q", slurp(data("dxf/r12_plate25.dxf")));
+  EXPECT_EQ(stdin_run.out, slurp(data("dxf/r12_plate25.holes.csv")));
+}
+
+TEST(cli_test, other_input_formats) {
+  TempDir t;
+  spit(t / "h.csv", "x,y,d\n10,10,3\n20,10,3\n20,20,6\n");
+  auto r = acodrill_run("holes " + q(t / "h.csv") + " --format csv -q");
+  EXPECT_EQ(r.out, "x_mm,y_mm,diameter_mm,layer\n10.000000,10.000000,3.000000,\n20.000000,10.000000,3.000000,\n"
+                   "20.000000,20.000000,6.000000,\n");
+  spit(t / "map.xml", "<holemap units=\"inch\"><hole x=\"1\" y=\"2\" diameter=\"0.25\"/></holemap>\n");
+  EXPECT_EQ(acodrill_run("holes " + q(t / "map.xml") + " --format csv -q").out,
+            "x_mm,y_mm,diameter_mm,layer\n25.400000,50.800000,6.350000,\n");
+  auto tsp = acodrill_run("holes " + q(data("tsplib/d198.tsp")) + " --format csv -q");
+  EXPECT_EQ(testutil::count_lines(tsp.out), 199);
+}
+
+TEST(cli_test, tsp_prints_the_length_and_writes_a_tour) {
+  TempDir t;
+  auto r = acodrill_run("tsp " + q(data("tsplib/d198.tsp")) + " --iterations 30 --tour " + q(t / "d198.tour"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  ASSERT_THAT(r.out, ::testing::StartsWith("length "));
+  const long long length = std::stoll(r.out.substr(7));
+  EXPECT_GE(length, 15780);
+  EXPECT_LT(length, 15780 * 1.05);
+  const std::string tour = slurp(t / "d198.tour");
+  EXPECT_THAT(tour, ::testing::HasSubstr("TOUR_SECTION\n"));
+  EXPECT_THAT(tour, ::testing::HasSubstr("-1\nEOF\n"));
+}
+
+TEST(cli_test, verify_catches_dropped_duplicated_moved_and_wrong_tool_holes) {
+  TempDir t;
+  const std::string sample = testutil::source_dir() + "/samples/pcb_mixed.dxf";
+  ASSERT_EQ(acodrill_run("plan " + q(sample) + " -o " + q(t / "ok.nc") + " -q").code, 0);
+  const std::string prog = slurp(t / "ok.nc");
+  auto lines_of = [](const std::string& s) {
+    std::vector<std::string> v;
+    std::istringstream in(s);
+    for (std::string l; std::getline(in, l);) v.push_back(l);
+    return v;
+  };
+  auto join = [](const std::vector<std::string>& v) {
+    std::string s;
+    for (const auto& l : v) s += l + "\n";
+    return s;
+  };
+  std::vector<std::string> lines = lines_of(prog);
+  // A bare "N.. X.. Y.." hole line, not the first of its tool.
+  std::size_t bare = 0;
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    if (lines[i][0] == 'N' && lines[i].find(" X") != std::string::npos && lines[i].find("G8") == std::string::npos &&
+        lines[i].find("G98") == std::string::npos) {
+      bare = i;
+      break;
+    }
+  }
+  ASSERT_GT(bare, 0u);
+  auto dropped = lines;
+  dropped.erase(dropped.begin() + static_cast<long>(bare));
+  auto duplicated = lines;
+  duplicated.insert(duplicated.begin() + static_cast<long>(bare), lines[bare]);
+  auto moved = lines;
+  moved[bare] = moved[bare].substr(0, moved[bare].find(" X")) + " X1.234 Y5.678";
+  // Wrong tool: swap the T numbers of the first two tool changes.
+  std::string wrong = prog;
+  const auto t1 = wrong.find("T1 M06"), t2 = wrong.find("T2 M06");
+  ASSERT_NE(t2, std::string::npos);
+  wrong[t1 + 1] = '2';
+  wrong[t2 + 1] = '1';
+  int index = 0;
+  for (const std::string& bad : {join(dropped), join(duplicated), join(moved), wrong}) {
+    spit(t / "bad.nc", bad);
+    auto r = acodrill_run("verify " + q(t / "bad.nc") + " --holes " + q(sample) + " -q");
+    EXPECT_EQ(r.code, 1) << "case " << index << ": " << r.out;
+    EXPECT_THAT(r.out, ::testing::HasSubstr("fault: ")) << "case " << index;
+    ++index;
+  }
+  EXPECT_EQ(acodrill_run("verify " + q(t / "ok.nc") + " --holes " + q(sample)).code, 0);
+}
+
+TEST(cli_test, bad_input_is_one_line_exit_2_and_no_output_file) {
+  TempDir t;
+  spit(t / "garbage.dxf", "0\nSECTION\n2\nENTITIES\n0\nCIRCLE\n10\nabc\n20\n1\n40\n1\n0\nENDSEC\n0\nEOF\n");
+  spit(t / "existing.nc", "KEEP ME\n");
+  struct Case {
+    std::string args;
+    std::string expect;  // substring of the error line
+  };
+  const std::vector<Case> cases = {
+      {"plan " + q(t / "garbage.dxf") + " -o " + q(t / "out.nc"), "garbage.dxf:8: "},
+      {"plan " + q(t / "garbage.dxf") + " -o " + q(t / "existing.nc"), "garbage.dxf:8: "},
+      {"plan " + q(t / "missing.dxf") + " -o " + q(t / "out.nc"), "missing.dxf: cannot read"},
+      {"plan " + q(testutil::source_dir() + "/samples/plate10.dxf") + " -o " + q(t / "out.nc") + " --rho 2", "--rho"},
+      {"plan " + q(testutil::source_dir() + "/samples/plate10.dxf") + " -o " + q(t / "out.nc") + " --dialect mazak",
+       "--dialect"},
+      {"plan " + q(testutil::source_dir() + "/samples/plate10.dxf") + " -o " + q(t / "out.nc") + " --ants 0", "--ants"},
+      {"plan " + q(testutil::source_dir() + "/samples/plate10.dxf") + " -o " + q(t / "out.nc") + " --algorithm xyz",
+       "--algorithm"},
+      {"plan " + q(testutil::source_dir() + "/samples/plate10.dxf") + " -o " + q(t / "nodir/out.nc"), "cannot write"},
+      {"plan " + q(testutil::source_dir() + "/samples/plate10.dxf") + " -o " + q(t / "out.nc") + " --resume-from 11",
+       "resume-from"},
+      {"frobnicate", "frobnicate"},
+      {"holes " + q(t / "garbage.dxf") + " --format xml", "--format"},
+  };
+  for (const Case& c : cases) {
+    auto r = acodrill_run(c.args);
+    EXPECT_EQ(r.code, 2) << c.args << "\n" << r.err;
+    EXPECT_EQ(testutil::count_lines(r.err), 1) << c.args << "\n" << r.err;
+    EXPECT_THAT(r.err, ::testing::StartsWith("acodrill: error: ")) << c.args;
+    EXPECT_THAT(r.err, ::testing::HasSubstr(c.expect)) << c.args;
+    EXPECT_FALSE(std::filesystem::exists(t / "out.nc")) << c.args;
+  }
+  EXPECT_EQ(slurp(t / "existing.nc"), "KEEP ME\n");
+  // No temporary files are left behind.
+  for (const auto& e : std::filesystem::directory_iterator(t.path())) {
+    EXPECT_EQ(e.path().string().find(".tmp-"), std::string::npos) << e.path();
+  }
+}
+
+TEST(cli_test, refuses_to_overwrite_its_input) {
+  TempDir t;
+  std::filesystem::copy_file(testutil::source_dir() + "/samples/plate10.dxf", t / "p.dxf");
+  const std::string before = slurp(t / "p.dxf");
+  auto r = acodrill_run("plan " + q(t / "p.dxf") + " -o " + q(t / "p.dxf"));
+  EXPECT_EQ(r.code, 2);
+  EXPECT_THAT(r.err, ::testing::HasSubstr("overwrite the input"));
+  EXPECT_EQ(slurp(t / "p.dxf"), before);
+}
+
+TEST(cli_test, help_and_version) {
+  auto h = acodrill_run("--help");
+  EXPECT_EQ(h.code, 0);
+  EXPECT_THAT(h.out, ::testing::HasSubstr("plan"));
+  auto ph = acodrill_run("plan --help");
+  EXPECT_EQ(ph.code, 0);
+  EXPECT_THAT(ph.out, ::testing::HasSubstr("Examples"));
+  EXPECT_THAT(acodrill_run("--version").out, ::testing::HasSubstr("acodrill"));
+  auto bench = testutil::run(q(std::string(ACO_BUILD_DIR) + "/bin/acobench") + " --help");
+  EXPECT_EQ(bench.code, 0);
+}

@@ -1,0 +1,256 @@
+// The colony and the baselines: invariants that hold for every run, optimality
+// where the optimum is known, determinism across thread counts, validation.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <random>
+
+#include "aco/baselines.h"
+#include "aco/error.h"
+#include "aco/solve.h"
+#include "app/inputs.h"
+#include "test_util.h"
+
+namespace {
+
+aco::Problem random_problem(std::size_t n, unsigned seed, aco::Shape shape = aco::Shape::ClosedTour) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 1000.0);
+  aco::Problem p;
+  p.shape = shape;
+  for (std::size_t i = 0; i < n; ++i) p.points.push_back({u(rng), u(rng)});
+  return p;
+}
+
+double brute_force(const aco::Problem& p) {
+  aco::Order o(p.points.size());
+  std::iota(o.begin(), o.end(), 0);
+  double best = aco::route_length(p, o);
+  // A closed tour may fix its first point; an open path may not.
+  auto first = p.shape == aco::Shape::ClosedTour ? o.begin() + 1 : o.begin();
+  while (std::next_permutation(first, o.end())) best = std::min(best, aco::route_length(p, o));
+  return best;
+}
+
+aco::Params quick(aco::Algorithm a, aco::LocalSearch ls = aco::LocalSearch::TwoOptOrOpt) {
+  aco::Params params;
+  params.algorithm = a;
+  params.local_search = ls;
+  params.iterations = 40;
+  params.threads = 2;
+  return params;
+}
+
+const aco::Algorithm kAll[] = {aco::Algorithm::AntSystem, aco::Algorithm::MaxMinAntSystem,
+                               aco::Algorithm::AntColonySystem};
+const aco::LocalSearch kAllLs[] = {aco::LocalSearch::None, aco::LocalSearch::TwoOpt, aco::LocalSearch::TwoOptOrOpt};
+
+}  // namespace
+
+TEST(solver_test, tour_is_a_permutation_and_its_length_recomputes) {
+  for (auto shape : {aco::Shape::ClosedTour, aco::Shape::OpenPath}) {
+    for (auto alg : kAll) {
+      for (auto ls : kAllLs) {
+        aco::Problem p = random_problem(150, 3, shape);
+        p.start = {-50, -50};
+        aco::Solution s = aco::solve(p, quick(alg, ls));
+        EXPECT_TRUE(aco::is_permutation_of(p, s.order)) << aco::to_string(alg) << " " << aco::to_string(ls);
+        EXPECT_NEAR(s.length, aco::route_length(p, s.order), 1e-6);
+        EXPECT_GE(s.iterations, 1);
+        ASSERT_FALSE(s.trace.empty());
+        EXPECT_NEAR(s.trace.back().best_length, s.length, 1e-6);
+      }
+    }
+  }
+}
+
+TEST(solver_test, optimal_on_small_instances_by_brute_force) {
+  for (unsigned seed = 1; seed <= 6; ++seed) {
+    for (std::size_t n : {4u, 6u, 8u, 9u}) {
+      for (auto shape : {aco::Shape::ClosedTour, aco::Shape::OpenPath}) {
+        aco::Problem p = random_problem(n, seed, shape);
+        p.start = {500, -100};
+        if (seed % 2 == 0 && shape == aco::Shape::OpenPath) p.end = aco::Point2{500, -100};
+        aco::Solution s = aco::solve(p, quick(aco::Algorithm::MaxMinAntSystem));
+        EXPECT_NEAR(s.length, brute_force(p), 1e-6) << "n=" << n << " seed=" << seed;
+      }
+    }
+  }
+}
+
+TEST(solver_test, thesis_ant_system_without_local_search_is_optimal_on_tiny_instances) {
+  aco::Params params = quick(aco::Algorithm::AntSystem, aco::LocalSearch::None);
+  params.ants = 30;
+  params.iterations = 30;
+  params.beta = 4;
+  for (unsigned seed = 1; seed <= 4; ++seed) {
+    aco::Problem p = random_problem(8, seed);
+    EXPECT_NEAR(aco::solve(p, params).length, brute_force(p), 1e-6) << "seed " << seed;
+  }
+}
+
+TEST(solver_test, regular_grid_reaches_its_known_optimum) {
+  // A closed tour through an even k x k grid of pitch 10 is at best k*k*10.
+  aco::Problem p;
+  for (int y = 0; y < 12; ++y) {
+    for (int x = 0; x < 12; ++x) p.points.push_back({x * 10.0, y * 10.0});
+  }
+  aco::Params params = quick(aco::Algorithm::MaxMinAntSystem);
+  params.iterations = 100;
+  EXPECT_NEAR(aco::solve(p, params).length, 1440.0, 1e-6);
+}
+
+TEST(solver_test, open_path_starts_at_start_and_ends_where_asked) {
+  aco::Problem p = random_problem(60, 9, aco::Shape::OpenPath);
+  p.start = {0, 0};
+  aco::Solution free_end = aco::solve(p, quick(aco::Algorithm::MaxMinAntSystem));
+  p.end = aco::Point2{1000, 1000};
+  aco::Solution fixed = aco::solve(p, quick(aco::Algorithm::MaxMinAntSystem));
+  // The route is start → order → (end): its first hole is reached from the start.
+  const double first_leg = aco::euclidean(p.start, p.points[fixed.order.front()]);
+  EXPECT_LT(first_leg, 400.0);
+  EXPECT_NEAR(fixed.length, aco::route_length(p, fixed.order), 1e-6);
+  EXPECT_GT(fixed.length, free_end.length - 1e-6);
+}
+
+TEST(solver_test, never_worse_than_nearest_neighbour_with_local_search) {
+  for (unsigned seed = 1; seed <= 5; ++seed) {
+    for (auto shape : {aco::Shape::ClosedTour, aco::Shape::OpenPath}) {
+      aco::Problem p = random_problem(300, seed, shape);
+      for (auto alg : kAll) {
+        aco::Params params = quick(alg);
+        params.iterations = 5;
+        aco::Solution s = aco::solve(p, params);
+        EXPECT_LE(s.length, aco::route_length(p, aco::nearest_neighbor(p)) + 1e-6) << aco::to_string(alg);
+      }
+    }
+  }
+}
+
+TEST(solver_test, same_seed_same_tour_for_1_2_and_5_threads) {
+  for (auto alg : kAll) {
+    aco::Problem p = random_problem(400, 11, aco::Shape::OpenPath);
+    aco::Params params = quick(alg);
+    params.iterations = 15;
+    params.threads = 1;
+    aco::Solution one = aco::solve(p, params);
+    params.threads = 2;
+    aco::Solution two = aco::solve(p, params);
+    params.threads = 5;
+    aco::Solution five = aco::solve(p, params);
+    EXPECT_EQ(one.order, two.order) << aco::to_string(alg);
+    EXPECT_EQ(one.order, five.order) << aco::to_string(alg);
+    params.seed = 2;
+    EXPECT_NE(aco::solve(p, params).order, one.order) << "another seed explores another way";
+  }
+}
+
+TEST(solver_test, thread_busy_time_is_recorded_per_thread) {
+  aco::Problem p = random_problem(200, 1);
+  aco::Params params = quick(aco::Algorithm::MaxMinAntSystem);
+  params.threads = 2;
+  aco::Solution s = aco::solve(p, params);
+  ASSERT_EQ(s.thread_busy_s.size(), 2u);
+  EXPECT_GT(s.thread_busy_s[0] + s.thread_busy_s[1], 0.0);
+}
+
+TEST(solver_test, stop_rules) {
+  aco::Problem p = random_problem(300, 2);
+  aco::Params params = quick(aco::Algorithm::MaxMinAntSystem);
+  params.iterations = 7;
+  params.stall_iterations = -1;
+  EXPECT_EQ(aco::solve(p, params).iterations, 7);
+  params.iterations = 0;
+  params.time_limit_s = 0.3;
+  aco::Solution timed = aco::solve(p, params);
+  EXPECT_EQ(timed.stop_reason, "time limit");
+  EXPECT_LT(timed.wall_s, 3.0);
+  params.time_limit_s = 0;
+  params.iterations = 100000;
+  params.stall_iterations = 5;
+  EXPECT_EQ(aco::solve(p, params).stop_reason, "stalled");
+}
+
+TEST(solver_test, degenerate_inputs) {
+  aco::Params params = quick(aco::Algorithm::MaxMinAntSystem);
+  for (std::size_t n : {0u, 1u, 2u, 3u, 5u}) {
+    aco::Problem p = random_problem(n, 1, aco::Shape::OpenPath);
+    aco::Solution s = aco::solve(p, params);
+    EXPECT_TRUE(aco::is_permutation_of(p, s.order)) << n;
+  }
+  aco::Problem same;  // all holes at one point
+  same.points.assign(50, {3, 3});
+  EXPECT_NEAR(aco::solve(same, params).length, 0.0, 1e-9);
+  aco::Problem line;  // collinear
+  for (int i = 0; i < 50; ++i) line.points.push_back({static_cast<double>((i * 37) % 50), 0.0});
+  EXPECT_NEAR(aco::solve(line, params).length, 98.0, 1e-6);
+  aco::Problem far;  // 1e9 mm coordinates, 1e-6 mm apart
+  for (int i = 0; i < 20; ++i) far.points.push_back({1e9 + i * 1e-6, 1e9});
+  EXPECT_TRUE(aco::is_permutation_of(far, aco::solve(far, params).order));
+}
+
+TEST(solver_test, metrics) {
+  EXPECT_DOUBLE_EQ(aco::distance(aco::Metric::Euclidean, {0, 0}, {3, 4}), 5.0);
+  EXPECT_DOUBLE_EQ(aco::distance(aco::Metric::Chebyshev, {0, 0}, {3, 4}), 4.0);
+  EXPECT_DOUBLE_EQ(aco::distance(aco::Metric::Manhattan, {0, 0}, {3, 4}), 7.0);
+  EXPECT_DOUBLE_EQ(aco::distance(aco::Metric::TsplibEuc2d, {0, 0}, {1, 1}), 1.0);
+  EXPECT_DOUBLE_EQ(aco::distance(aco::Metric::TsplibEuc2d, {0, 0}, {1.5, 1.5}), 2.0);
+}
+
+TEST(solver_test, parameter_validation) {
+  auto message = [](aco::Params p) -> std::string {
+    try {
+      aco::Problem prob = random_problem(10, 1);
+      aco::solve(prob, p);
+    } catch (const aco::InputError& e) {
+      return e.what();
+    }
+    return "";
+  };
+  aco::Params p;
+  p.alpha = -1;
+  EXPECT_THAT(message(p), ::testing::HasSubstr("--alpha"));
+  p = {};
+  p.rho = 1.5;
+  EXPECT_THAT(message(p), ::testing::HasSubstr("--rho"));
+  p = {};
+  p.rho = 0;
+  EXPECT_THAT(message(p), ::testing::HasSubstr("--rho"));
+  p = {};
+  p.ants = -3;
+  EXPECT_THAT(message(p), ::testing::HasSubstr("--ants"));
+  p = {};
+  p.beta = std::nan("");
+  EXPECT_THAT(message(p), ::testing::HasSubstr("--beta"));
+}
+
+TEST(solver_test, baselines_are_permutations_and_ordered_sensibly) {
+  aco::Problem p = random_problem(500, 5, aco::Shape::OpenPath);
+  const double input = aco::route_length(p, aco::input_order(p));
+  const double nn = aco::route_length(p, aco::nearest_neighbor(p));
+  const double nn2 = aco::route_length(p, aco::nearest_neighbor_2opt(p));
+  for (const aco::Order& o : {aco::input_order(p), aco::nearest_neighbor(p), aco::greedy_edge(p), aco::raster(p),
+                              aco::nearest_neighbor_2opt(p)}) {
+    EXPECT_TRUE(aco::is_permutation_of(p, o));
+  }
+  EXPECT_LT(nn, input);
+  EXPECT_LE(nn2, nn);
+  EXPECT_LT(aco::route_length(p, aco::greedy_edge(p)), input);
+  EXPECT_LT(aco::route_length(p, aco::raster(p)), input);
+}
+
+TEST(solver_test, tsplib_d198_within_a_few_percent_quickly) {
+  app::LoadedHoles d198 = app::load_holes(testutil::data("tsplib/d198.tsp"), {});
+  aco::Problem p;
+  p.metric = aco::Metric::TsplibEuc2d;
+  for (const auto& h : d198.holes) p.points.push_back(h.center);
+  aco::Params params;
+  params.iterations = 60;
+  params.threads = 2;
+  const double gap = (aco::solve(p, params).length - 15780.0) / 15780.0;
+  EXPECT_LT(gap, 0.03);
+  EXPECT_GE(gap, 0.0) << "below the proven optimum means the length is miscomputed";
+}

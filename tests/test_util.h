@@ -1,0 +1,104 @@
+#pragma once
+// Helpers shared by the tests: paths, files, and running the built programs.
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "aco/geometry.h"
+
+namespace testutil {
+
+inline std::string source_dir() { return ACO_SOURCE_DIR; }
+inline std::string data(const std::string& rel) { return source_dir() + "/tests/data/" + rel; }
+inline std::string acodrill() { return ACODRILL_BIN; }
+
+inline std::string slurp(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+inline void spit(const std::string& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+}
+
+// A fresh directory, removed when the object goes.
+class TempDir {
+ public:
+  TempDir() {
+    std::string tmpl = (std::filesystem::temp_directory_path() / "acodrill-test-XXXXXX").string();
+    path_ = ::mkdtemp(tmpl.data());
+  }
+  ~TempDir() { std::filesystem::remove_all(path_); }
+  std::string operator/(const std::string& name) const { return path_ + "/" + name; }
+  const std::string& path() const { return path_; }
+
+ private:
+  std::string path_;
+};
+
+struct Run {
+  int code = -1;
+  std::string out, err;
+};
+
+inline std::string shell_quote(const std::string& s) {
+  std::string q = "'";
+  for (char c : s) q += (c == '\'') ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+// Runs a shell command line; captures stdout, stderr and the exit code.
+inline Run run(const std::string& command, const std::string& stdin_text = "") {
+  TempDir t;
+  const std::string in = t / "in", out = t / "out", err = t / "err";
+  spit(in, stdin_text);
+  const std::string full = command + " <" + shell_quote(in) + " >" + shell_quote(out) + " 2>" + shell_quote(err);
+  int status = std::system(full.c_str());
+  Run r;
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.out = slurp(out);
+  r.err = slurp(err);
+  return r;
+}
+
+inline Run acodrill_run(const std::string& args, const std::string& stdin_text = "") {
+  return run(shell_quote(acodrill()) + " " + args, stdin_text);
+}
+
+// Rows of a holes CSV (x_mm,y_mm,diameter_mm[,layer]) with a header.
+inline aco::HoleSet read_holes_csv(const std::string& text) {
+  aco::HoleSet holes;
+  std::istringstream in(text);
+  std::string line;
+  std::getline(in, line);  // header
+  while (std::getline(in, line)) {
+    if (line.empty()) continue;
+    std::istringstream row(line);
+    std::string x, y, d, layer;
+    std::getline(row, x, ',');
+    std::getline(row, y, ',');
+    std::getline(row, d, ',');
+    std::getline(row, layer);
+    if (!layer.empty() && layer.back() == '\r') layer.pop_back();
+    holes.push_back({{std::stod(x), std::stod(y)}, std::stod(d), layer, 0});
+  }
+  return holes;
+}
+
+inline int count_lines(const std::string& s) {
+  int n = 0;
+  for (char c : s) n += c == '\n';
+  return n;
+}
+
+}  // namespace testutil
