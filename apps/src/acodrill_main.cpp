@@ -30,7 +30,7 @@ struct SolverArgs {
   std::uint64_t seed = 1;
   double time_limit = 0.0;
   int iterations = 0;
-  std::string algorithm = "mmas";
+  std::string algorithm = "acs";
   int ants = 0;
   double alpha = 1.0;
   std::optional<double> beta, rho;
@@ -43,7 +43,7 @@ void add_solver_options(CLI::App* cmd, SolverArgs& a) {
   cmd->add_option("--time-limit", a.time_limit, "Stop after S seconds per tool (0 = no limit)")->check(CLI::Range(0.0, 1e7));
   cmd->add_option("--iterations", a.iterations, "Colony iterations (default: 300, or until the time limit)")
       ->check(CLI::Range(1, 100000000));
-  cmd->add_option("--algorithm", a.algorithm, "as (the thesis's Ant System), mmas (MAX-MIN, default), acs");
+  cmd->add_option("--algorithm", a.algorithm, "acs (Ant Colony System, default), mmas (MAX-MIN), as (the thesis's Ant System)");
   cmd->add_option("--ants", a.ants, "Ants per iteration (default: 10 with local search, else min(n,100))")
       ->check(CLI::Range(1, 100000));
   cmd->add_option("--alpha", a.alpha, "Pheromone weight (default 1)")->check(CLI::Range(0.0, 100.0));

@@ -8,17 +8,6 @@
 
 namespace aco {
 
-double distance(Metric metric, Point2 a, Point2 b) {
-  const double dx = std::fabs(a.x - b.x), dy = std::fabs(a.y - b.y);
-  switch (metric) {
-    case Metric::Euclidean: return std::sqrt(dx * dx + dy * dy);
-    case Metric::Chebyshev: return std::max(dx, dy);
-    case Metric::Manhattan: return dx + dy;
-    case Metric::TsplibEuc2d: return std::floor(std::sqrt(dx * dx + dy * dy) + 0.5);  // TSPLIB's nint()
-  }
-  return 0.0;
-}
-
 double route_length(const Problem& problem, const Order& order) {
   if (order.empty()) {
     if (problem.shape == Shape::OpenPath && problem.end) return distance(problem.metric, problem.start, *problem.end);

@@ -26,7 +26,8 @@ struct Progress {
 };
 
 struct Params {
-  Algorithm algorithm = Algorithm::MaxMinAntSystem;
+  // The default is what measured best (docs/benchmarks.md): ACS with 2-opt + Or-opt.
+  Algorithm algorithm = Algorithm::AntColonySystem;
   LocalSearch local_search = LocalSearch::TwoOptOrOpt;
   int ants = 0;             // 0: default for the algorithm and size
   int iterations = 0;       // 0: default; the run stops at whichever limit comes first

@@ -10,6 +10,7 @@
  *   p.shape = aco::Shape::OpenPath;  p.start = {0, 0};
  *   double len = aco::route_length(p, {0, 1, 2});  // start → holes
  */
+#include <cmath>
 #include <optional>
 #include <string>
 
@@ -37,7 +38,17 @@ struct Problem {
   std::optional<Point2> end;   // OpenPath only: a fixed end, e.g. the home position
 };
 
-double distance(Metric metric, Point2 a, Point2 b);
+// Inline: it is the innermost call of tour construction and local search.
+inline double distance(Metric metric, Point2 a, Point2 b) {
+  const double dx = std::fabs(a.x - b.x), dy = std::fabs(a.y - b.y);
+  switch (metric) {
+    case Metric::Euclidean: return std::sqrt(dx * dx + dy * dy);
+    case Metric::Chebyshev: return dx > dy ? dx : dy;
+    case Metric::Manhattan: return dx + dy;
+    case Metric::TsplibEuc2d: return std::floor(std::sqrt(dx * dx + dy * dy) + 0.5);  // TSPLIB's nint()
+  }
+  return 0.0;
+}
 
 // Length of the route that visits `order`: a closed tour returns to its first
 // point; an open path starts at problem.start and ends at problem.end if set.

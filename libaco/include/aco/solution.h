@@ -20,7 +20,7 @@ struct Solution {
   double wall_s = 0.0;
   std::vector<TracePoint> trace;       // best length each time it improved
   std::vector<double> thread_busy_s;   // time each worker spent building and improving tours
-  Algorithm algorithm = Algorithm::MaxMinAntSystem;
+  Algorithm algorithm = Algorithm::AntColonySystem;
   int ants = 0;
   int threads = 0;
   std::string stop_reason;     // "iterations", "time limit", "stalled", "trivial"
