@@ -11,7 +11,7 @@ BUILD_PACKAGES=(cmake ninja-build g++ libeigen3-dev libtinyxml2-dev libgtest-dev
                 nlohmann-json3-dev libcli11-dev libnanoflann-dev)
 TEST_PACKAGES=(python3-ezdxf librsvg2-bin)
 # LinuxCNC's standalone interpreter rs274 reads our programs back in the tests.
-TEST_PACKAGES_NO_RECOMMENDS=(linuxcnc-uspace)
+TEST_PACKAGES_NO_RECOMMENDS=(linuxcnc-uspace gerbv)
 
 missing_packages() {
   local p

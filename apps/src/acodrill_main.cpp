@@ -14,6 +14,7 @@
 #include "aco/error.h"
 #include "aco/solve.h"
 #include "app/errors.h"
+#include "app/excellon.h"
 #include "app/files.h"
 #include "app/inputs.h"
 #include "app/plan.h"
@@ -149,9 +150,9 @@ int cmd_holes(const std::string& input, const InputArgs& in_args, const std::str
 }
 
 struct PlanArgs {
-  std::string input, output, report, svg, convergence;
-  std::string dialect = "haas", units = "mm", tools, machine, material = "steel", objective = "distance";
-  double thickness = 6.35;
+  std::string input, output, report, svg, svg_compare, convergence, excellon;
+  std::string dialect = "haas", units, tools, machine, material, objective = "distance";
+  std::optional<double> thickness;
   std::size_t resume_from = 1;
   int program_number = 1001;
   bool quiet = false;
@@ -159,7 +160,7 @@ struct PlanArgs {
 
 int cmd_plan(const PlanArgs& a, const SolverArgs& s, const InputArgs& in_args) {
   // Refuse to overwrite the input with the program before doing any work.
-  for (const std::string* out : {&a.output, &a.report, &a.svg, &a.convergence}) {
+  for (const std::string* out : {&a.output, &a.report, &a.svg, &a.svg_compare, &a.convergence, &a.excellon}) {
     if (!out->empty() && app::same_file(a.input, *out)) {
       throw app::UserError(*out, 0, "output would overwrite the input file");
     }
@@ -169,14 +170,15 @@ int cmd_plan(const PlanArgs& a, const SolverArgs& s, const InputArgs& in_args) {
   auto dialect = gcode::dialect_from_string(a.dialect);
   if (!dialect) throw app::UserError("--dialect must be haas, fanuc or linuxcnc (got \"" + a.dialect + "\")");
   o.program.dialect = *dialect;
-  if (a.units == "mm") o.program.units = gcode::Units::Mm;
+  if (a.units.empty() || a.units == "mm") o.program.units = gcode::Units::Mm;
   else if (a.units == "inch" || a.units == "in") o.program.units = gcode::Units::Inch;
   else throw app::UserError("--units must be mm or inch (got \"" + a.units + "\")");
-  auto material = app::material_from_string(a.material);
-  if (!material) throw app::UserError("--material must be steel, aluminium or pcb (got \"" + a.material + "\")");
-  o.material = *material;
-  if (!(a.thickness > 0)) throw app::UserError("--thickness must be positive");
-  o.thickness_mm = a.thickness;
+  if (!a.material.empty()) {
+    auto material = app::material_from_string(a.material);
+    if (!material) throw app::UserError("--material must be steel, aluminium or pcb (got \"" + a.material + "\")");
+    o.material = *material;
+  }
+  if (a.thickness && !(*a.thickness > 0 && *a.thickness < 1000)) throw app::UserError("--thickness must be in (0, 1000) mm");
   if (a.objective == "distance") o.objective = app::Objective::Distance;
   else if (a.objective == "time") o.objective = app::Objective::Time;
   else throw app::UserError("--objective must be distance or time (got \"" + a.objective + "\")");
@@ -184,6 +186,10 @@ int cmd_plan(const PlanArgs& a, const SolverArgs& s, const InputArgs& in_args) {
   if (!a.tools.empty()) o.tools = app::load_tool_table(a.tools);
 
   app::LoadedHoles loaded = app::load_holes(a.input, to_input_options(in_args));
+  // An Excellon file is a circuit board unless the user says otherwise: PCB
+  // feeds and speeds through a 1.6 mm board, not a quarter inch of steel.
+  if (a.material.empty() && loaded.format == app::InputFormat::Excellon) o.material = app::Material::Pcb;
+  o.thickness_mm = a.thickness.value_or(o.material == app::Material::Pcb ? 1.6 : 6.35);
   if (loaded.holes.empty()) throw app::UserError(a.input == "-" ? "<stdin>" : a.input, 0, "no holes to drill");
 
   const bool progress = !a.quiet && ::isatty(STDERR_FILENO);
@@ -194,6 +200,7 @@ int cmd_plan(const PlanArgs& a, const SolverArgs& s, const InputArgs& in_args) {
     };
   }
   const std::string source = a.input == "-" ? "<stdin>" : a.input;
+  const std::string source_name = source.substr(source.find_last_of('/') == std::string::npos ? 0 : source.find_last_of('/') + 1);
   app::PlanResult plan = app::plan_job(loaded.holes, o, source);
   if (progress) std::fprintf(stderr, "\r%60s\r", "");
 
@@ -204,15 +211,16 @@ int cmd_plan(const PlanArgs& a, const SolverArgs& s, const InputArgs& in_args) {
   ps.resume_from = a.resume_from;
   std::size_t n_tools = plan.groups.size();
   ps.header_comments = {
-      "SOURCE: " + source.substr(source.find_last_of('/') == std::string::npos ? 0 : source.find_last_of('/') + 1),
+      "SOURCE: " + source_name,
       std::to_string(loaded.holes.size()) + " HOLES, " + std::to_string(n_tools) + (n_tools == 1 ? " TOOL" : " TOOLS"),
       "EST. TIME " + format_minutes(plan.optimized.time_s) + ", TRAVEL " +
           gcode::format_number(plan.optimized.travel_mm, 1) + " MM",
       "ORDER: ACODRILL " + std::string(aco::to_string(plan.solver.algorithm)) + " SEED " +
           std::to_string(plan.solver.seed)};
   std::ostringstream program;
+  const std::vector<gcode::ToolPass> passes = app::to_passes(loaded.holes, plan);
   try {
-    gcode::write_program(program, app::to_passes(loaded.holes, plan), ps);
+    gcode::write_program(program, passes, ps);
   } catch (const std::invalid_argument& e) {
     throw app::UserError(e.what());
   }
@@ -222,6 +230,11 @@ int cmd_plan(const PlanArgs& a, const SolverArgs& s, const InputArgs& in_args) {
   app::ReportContext ctx{source, a.output, loaded.holes.size()};
   if (!a.report.empty()) app::write_file_atomic(a.report, app::report_json(loaded.holes, plan, ctx));
   if (!a.convergence.empty()) app::write_file_atomic(a.convergence, app::convergence_csv(plan));
+  if (!a.excellon.empty()) {
+    // The input's own units when it is Excellon, unless --units chose others.
+    const bool metric = a.units.empty() ? loaded.metric.value_or(true) : o.program.units == gcode::Units::Mm;
+    app::write_file_atomic(a.excellon, app::write_excellon(passes, metric, source_name));
+  }
 
   if (!a.quiet) {
     print_warnings(loaded, a.input, a.quiet);
@@ -244,6 +257,7 @@ int cmd_plan(const PlanArgs& a, const SolverArgs& s, const InputArgs& in_args) {
     if (a.output != "-") std::fprintf(stderr, "  program: %s\n", a.output.c_str());
     if (!a.report.empty()) std::fprintf(stderr, "  report: %s\n", a.report.c_str());
     if (!a.convergence.empty()) std::fprintf(stderr, "  convergence: %s\n", a.convergence.c_str());
+    if (!a.excellon.empty()) std::fprintf(stderr, "  excellon: %s\n", a.excellon.c_str());
   }
   return 0;
 }
@@ -396,12 +410,13 @@ int main(int argc, char** argv) {
   plan_cmd->add_option("--report", plan.report, "Write a JSON report: holes, tools, travel, time, solver");
   plan_cmd->add_option("--svg", plan.svg, "Write a picture of the route (SVG)");
   plan_cmd->add_option("--convergence", plan.convergence, "Write best length by iteration and time (CSV)");
+  plan_cmd->add_option("--excellon", plan.excellon, "Also write the optimized order as an Excellon drill file");
   plan_cmd->add_option("--dialect", plan.dialect, "haas (default) | fanuc | linuxcnc");
   plan_cmd->add_option("--units", plan.units, "Program units: mm (default) | inch");
   plan_cmd->add_option("--tools", plan.tools, "Tool table (JSON); default: one tool per diameter");
   plan_cmd->add_option("--machine", plan.machine, "Machine profile (JSON); default: HAAS VF-2 class");
-  plan_cmd->add_option("--material", plan.material, "steel (default) | aluminium | pcb: feeds and speeds of generated tools");
-  plan_cmd->add_option("--thickness", plan.thickness, "Part thickness in mm for generated tools (default 6.35)");
+  plan_cmd->add_option("--material", plan.material, "steel | aluminium | pcb: feeds and speeds of generated tools (default steel; pcb for Excellon input)");
+  plan_cmd->add_option("--thickness", plan.thickness, "Part thickness in mm for generated tools (default 6.35, or 1.6 for pcb)");
   plan_cmd->add_option("--objective", plan.objective, "distance (default) | time: minimise travel or rapid time");
   plan_cmd->add_option("--resume-from", plan.resume_from, "Drill holes N, N+1, ... of the same order (default 1)")
       ->check(CLI::Range(std::size_t{1}, std::size_t{100'000'000}));

@@ -1,15 +1,427 @@
+// Excellon drill files, as EDA tools write them (IPC-NC-349 and the Excellon
+// CNC-7 manual; dialect notes from gerbv's drill.c behaviour and the fixtures).
+//
+// Numbers without a decimal point are implicit: with LZ (leading zeros kept)
+// the digits are read from the left against the integer digits of the format;
+// with TZ (trailing zeros kept, the usual case) or no statement, from the right
+// against its decimal digits. The format is 2:4 for inch and 3:3 for metric
+// unless a header says otherwise (";FILE_FORMAT=2:4", ";FORMAT={3:3/...}",
+// "METRIC,TZ,000.000"); the last statement wins.
 #include "app/excellon.h"
 
+#include <charconv>
+#include <cmath>
+#include <algorithm>
+#include <cstdio>
+#include <cstring>
+#include <map>
+#include <optional>
+#include <sstream>
+
+#include "aco/hole_set.h"
 #include "app/errors.h"
+#include "gcode/program.h"
 
 namespace app {
 
-bool looks_like_excellon(std::string_view head) {
-  return head.rfind("M48", 0) == 0 || head.find("\nM48") != std::string_view::npos;
+namespace {
+
+constexpr double kInch = 25.4;
+
+std::string_view trim(std::string_view s) {
+  while (!s.empty() && (s.front() == ' ' || s.front() == '\t' || s.front() == '\r')) s.remove_prefix(1);
+  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) s.remove_suffix(1);
+  return s;
 }
 
-LoadedHoles parse_excellon(const std::string& path, std::string_view, const InputOptions&) {
-  throw UserError(path, 1, "Excellon input is not supported by this build yet");
+bool starts_with(std::string_view s, std::string_view p) { return s.substr(0, p.size()) == p; }
+
+struct Format {
+  bool metric = false;
+  bool units_known = false;
+  enum class Zeros { Unknown, Leading, Trailing } zeros = Zeros::Unknown;  // which zeros are KEPT
+  int int_digits = 0, dec_digits = 0;  // 0: the default for the units
+  int ints() const { return int_digits ? int_digits : (metric ? 3 : 2); }
+  int decs() const { return dec_digits ? dec_digits : (metric ? 3 : 4); }
+};
+
+class Reader {
+ public:
+  Reader(const std::string& path, const InputOptions& options) : path_(path), options_(options) {}
+
+  LoadedHoles run(std::string_view data);
+
+ private:
+  [[noreturn]] void fail(const std::string& what) const { throw UserError(path_, line_, what); }
+  void header_line(std::string_view s);
+  void body_line(std::string_view s);
+  void define_tool(std::string_view s);
+  double coordinate(std::string_view digits) const;
+  double unit_mm() const { return fmt_.metric ? 1.0 : kInch; }
+  void hit(double x, double y);
+  // Reads a word's number starting at s[i] (after its letter); advances i.
+  std::string_view number_at(std::string_view s, std::size_t& i) const {
+    std::size_t start = i;
+    if (i < s.size() && (s[i] == '+' || s[i] == '-')) ++i;
+    while (i < s.size() && (std::isdigit(static_cast<unsigned char>(s[i])) || s[i] == '.')) ++i;
+    return s.substr(start, i - start);
+  }
+  double plain_number(std::string_view s) const {
+    double v = 0;
+    if (!s.empty() && s.front() == '+') s.remove_prefix(1);
+    auto r = std::from_chars(s.data(), s.data() + s.size(), v);
+    if (s.empty() || r.ec != std::errc() || r.ptr != s.data() + s.size() || !std::isfinite(v)) {
+      fail("\"" + std::string(s) + "\" is not a number");
+    }
+    return v;
+  }
+
+  std::string path_;
+  const InputOptions& options_;
+  std::uint32_t line_ = 0;
+  Format fmt_;
+  bool in_header_ = false;
+  bool absolute_ = true;
+  bool route_mode_ = false;  // G00/G01/G02/G03: routing, not drilling
+  bool ended_ = false;
+  std::map<int, double> tools_;  // number → diameter in file units
+  int tool_ = -1;                // -1: none selected yet; 0: unloaded (T0)
+  double x_ = 0, y_ = 0;         // file units, before the G93 offset
+  double off_x_ = 0, off_y_ = 0;
+  std::size_t slots_ = 0, routed_ = 0;
+  LoadedHoles out_;
+};
+
+void Reader::define_tool(std::string_view s) {
+  // "T01C0.028", "T1F00S00C0.028", "T1C0.028F200S100" (in the body, as old OrCAD writes)
+  std::size_t i = 1;
+  std::string_view num = number_at(s, i);
+  int number = 0;
+  auto r = std::from_chars(num.data(), num.data() + num.size(), number);
+  if (num.empty() || r.ec != std::errc() || r.ptr != num.data() + num.size() || number < 0) {
+    fail("bad tool number in \"" + std::string(s) + "\"");
+  }
+  std::optional<double> diameter;
+  while (i < s.size()) {
+    char letter = static_cast<char>(std::toupper(static_cast<unsigned char>(s[i])));
+    ++i;
+    std::string_view v = number_at(s, i);
+    if (v.empty()) fail("bad tool definition \"" + std::string(s) + "\"");
+    if (letter == 'C') diameter = plain_number(v);
+    // F (feed), S (speed), B, H, Z: machine settings, not geometry.
+  }
+  if (diameter) {
+    if (*diameter < 0) fail("tool T" + std::to_string(number) + " has a negative diameter");
+    tools_[number] = *diameter;
+  }
+  if (!in_header_) {
+    if (!diameter && number != 0 && !tools_.count(number)) fail("tool T" + std::to_string(number) + " is not defined");
+    tool_ = number;
+  }
+}
+
+void Reader::header_line(std::string_view s) {
+  if (s == "%" || s == "M95") {
+    in_header_ = false;
+    return;
+  }
+  if (starts_with(s, "INCH") || starts_with(s, "METRIC")) {
+    fmt_.metric = starts_with(s, "METRIC");
+    fmt_.units_known = true;
+    std::size_t comma = s.find(',');
+    while (comma != std::string_view::npos) {
+      std::size_t next = s.find(',', comma + 1);
+      std::string_view part = trim(s.substr(comma + 1, next == std::string_view::npos ? next : next - comma - 1));
+      if (part == "LZ") fmt_.zeros = Format::Zeros::Leading;
+      else if (part == "TZ") fmt_.zeros = Format::Zeros::Trailing;
+      else if (!part.empty() && part.find('.') != std::string_view::npos) {  // "000.000"
+        fmt_.int_digits = static_cast<int>(part.find('.'));
+        fmt_.dec_digits = static_cast<int>(part.size() - part.find('.') - 1);
+      }
+      comma = next;
+    }
+    return;
+  }
+  if (s[0] == 'T' && s.size() > 1 && std::isdigit(static_cast<unsigned char>(s[1]))) {
+    define_tool(s);
+    return;
+  }
+  if (s == "M71") {
+    fmt_.metric = true;
+    fmt_.units_known = true;
+    return;
+  }
+  if (s == "M72") {
+    fmt_.metric = false;
+    fmt_.units_known = true;
+    return;
+  }
+  // FMAT, ICI, VER, DETECT, ATC, OM48, G90/G91 ...: settings that do not move a hit.
+  if (s == "G91" || s == "ICI,ON") absolute_ = false;
+  if (s == "G90" || s == "ICI,OFF") absolute_ = true;
+}
+
+double Reader::coordinate(std::string_view text) const {
+  if (text.find('.') != std::string_view::npos) return plain_number(text);
+  bool negative = false;
+  if (!text.empty() && (text[0] == '-' || text[0] == '+')) {
+    negative = text[0] == '-';
+    text.remove_prefix(1);
+  }
+  if (text.empty() || text.size() > 12) fail("bad coordinate \"" + std::string(text) + "\"");
+  long long digits = 0;
+  for (char c : text) {
+    if (!std::isdigit(static_cast<unsigned char>(c))) fail("bad coordinate \"" + std::string(text) + "\"");
+    digits = digits * 10 + (c - '0');
+  }
+  double v;
+  if (fmt_.zeros == Format::Zeros::Leading) {
+    // Leading zeros kept, trailing dropped: the first int_digits digits are the integer part.
+    const int total = fmt_.ints() + fmt_.decs();
+    v = static_cast<double>(digits) * std::pow(10.0, total - static_cast<int>(text.size())) / std::pow(10.0, fmt_.decs());
+  } else {
+    v = static_cast<double>(digits) / std::pow(10.0, fmt_.decs());
+  }
+  return negative ? -v : v;
+}
+
+void Reader::hit(double x, double y) {
+  if (tool_ < 0) fail("drill hit before any tool is selected");
+  if (tool_ == 0) fail("drill hit with no tool loaded (T0)");
+  auto t = tools_.find(tool_);
+  if (t == tools_.end()) fail("tool T" + std::to_string(tool_) + " is not defined");
+  aco::Hole h;
+  const double u = unit_mm();
+  h.center = {(x + off_x_) * u, (y + off_y_) * u};
+  h.diameter = t->second * u;
+  h.layer = "T" + std::to_string(tool_);
+  h.source_line = line_;
+  out_.holes.push_back(std::move(h));
+  if (out_.holes.size() > options_.dxf.max_holes) {
+    fail("more than " + std::to_string(options_.dxf.max_holes) + " holes (the hole limit, --max-holes)");
+  }
+}
+
+void Reader::body_line(std::string_view s) {
+  if (s == "M30" || s == "M00" || s == "M02") {
+    ended_ = true;
+    return;
+  }
+  if (s == "M48") {
+    in_header_ = true;
+    return;
+  }
+  if (s == "%" || s == "M95") return;  // end of a header we did not see start
+  if (s[0] == 'T' && s.size() > 1 && std::isdigit(static_cast<unsigned char>(s[1]))) {
+    define_tool(s);
+    return;
+  }
+  if (starts_with(s, "INCH") || starts_with(s, "METRIC") || s == "M71" || s == "M72") {
+    header_line(s);
+    return;
+  }
+  if (starts_with(s, "M15") || starts_with(s, "M16") || starts_with(s, "M17") || starts_with(s, "M14")) {
+    route_mode_ = true;  // plunge / retract of a routing tool
+    return;
+  }
+  // A block of words: G codes, X/Y coordinates, a repeat R.
+  std::size_t i = 0;
+  std::optional<double> wx, wy;
+  std::optional<long long> repeat;
+  bool slot = false, g93 = false, any = false;
+  while (i < s.size()) {
+    const char letter = s[i];  // Excellon words are upper case; "x12a4" is garbage, not an A word
+    if (letter == ' ') {
+      ++i;
+      continue;
+    }
+    ++i;
+    std::string_view v = number_at(s, i);
+    switch (letter) {
+      case 'G': {
+        const int g = static_cast<int>(plain_number(v));
+        if (g == 0 || g == 1 || g == 2 || g == 3) route_mode_ = true;
+        else if (g == 5 || g == 81) route_mode_ = false;
+        else if (g == 85) slot = true;
+        else if (g == 90) absolute_ = true;
+        else if (g == 91) absolute_ = false;
+        else if (g == 93) g93 = true;
+        break;
+      }
+      case 'X': {
+        if (v.empty()) fail("X without a number");
+        const double c = coordinate(v);
+        if (slot) break;  // the slot's end point
+        wx = c;
+        any = true;
+        break;
+      }
+      case 'Y': {
+        if (v.empty()) fail("Y without a number");
+        const double c = coordinate(v);
+        if (slot) break;
+        wy = c;
+        any = true;
+        break;
+      }
+      case 'R': {
+        if (v.empty()) fail("R without a count");
+        repeat = static_cast<long long>(plain_number(v));
+        if (*repeat < 0 || *repeat > 1000000) fail("repeat count out of range");
+        break;
+      }
+      case 'M': case 'F': case 'S': case 'A': case 'I': case 'J': case 'D': case 'P': case 'Z':
+        break;  // feeds, speeds, arc centres, canned messages: no hit position
+      case ';':
+        return;
+      default:
+        fail("unexpected \"" + std::string(s.substr(0, 40)) + "\"");
+    }
+  }
+  if (g93) {
+    // G93 X Y: the zero point is set here; later coordinates are relative to it.
+    off_x_ = wx.value_or(0.0);
+    off_y_ = wy.value_or(0.0);
+    return;
+  }
+  if (slot) {
+    ++slots_;
+    return;
+  }
+  if (!any) return;
+  if (repeat) {
+    // R n X dx Y dy: n more hits, each offset from the previous one.
+    for (long long k = 0; k < *repeat; ++k) {
+      x_ += wx.value_or(0.0);
+      y_ += wy.value_or(0.0);
+      if (route_mode_) ++routed_;
+      else hit(x_, y_);
+    }
+    return;
+  }
+  if (absolute_) {
+    if (wx) x_ = *wx;
+    if (wy) y_ = *wy;
+  } else {
+    x_ += wx.value_or(0.0);
+    y_ += wy.value_or(0.0);
+  }
+  if (route_mode_) {
+    ++routed_;
+    return;
+  }
+  hit(x_, y_);
+}
+
+LoadedHoles Reader::run(std::string_view data) {
+  out_.format = InputFormat::Excellon;
+  if (!options_.input_units_given) {
+    fmt_.metric = false;  // Excellon's default is inch
+  } else {
+    fmt_.metric = options_.default_unit_mm == 1.0;
+  }
+  std::size_t pos = 0;
+  while (pos < data.size() && !ended_) {
+    std::size_t nl = data.find('\n', pos);
+    if (nl == std::string_view::npos) nl = data.size();
+    std::string_view raw = data.substr(pos, nl - pos);
+    pos = nl + 1;
+    ++line_;
+    // Comments carry format statements from KiCad (";FORMAT={2:4/ absolute / inch / keep zeros}")
+    // and Altium (";FILE_FORMAT=2:4").
+    std::string_view s = trim(raw);
+    if (s.empty()) continue;
+    if (s[0] == ';') {
+      std::size_t f = s.find("FILE_FORMAT=");
+      std::size_t g = s.find("FORMAT={");
+      if (f != std::string_view::npos || g != std::string_view::npos) {
+        std::string_view spec = f != std::string_view::npos ? s.substr(f + 12) : s.substr(g + 8);
+        int a = 0, b = 0;
+        if (std::sscanf(std::string(spec).c_str(), "%d:%d", &a, &b) == 2 && a > 0 && b > 0 && a < 8 && b < 8) {
+          fmt_.int_digits = a;
+          fmt_.dec_digits = b;
+        }
+        if (g != std::string_view::npos) {
+          if (spec.find("inch") != std::string_view::npos) fmt_.metric = false, fmt_.units_known = true;
+          if (spec.find("metric") != std::string_view::npos || spec.find("mm") != std::string_view::npos) {
+            fmt_.metric = true;
+            fmt_.units_known = true;
+          }
+          if (spec.find("suppress trailing") != std::string_view::npos) fmt_.zeros = Format::Zeros::Leading;
+          if (spec.find("suppress leading") != std::string_view::npos) fmt_.zeros = Format::Zeros::Trailing;
+        }
+      }
+      continue;
+    }
+    for (char c : s) {
+      if (static_cast<unsigned char>(c) < 32 && c != '\t') fail("control character in an Excellon file");
+    }
+    if (in_header_) header_line(s);
+    else body_line(s);
+  }
+  if (slots_ > 0 || routed_ > 0) {
+    out_.warnings.push_back({0, std::to_string(slots_) + " G85 slot(s) and " + std::to_string(routed_) +
+                                    " routed move(s) are not drill hits; skipped"});
+  }
+  out_.metric = fmt_.metric;
+  return std::move(out_);
+}
+
+bool is_gerber(std::string_view head) {
+  return head.find("%FS") != std::string_view::npos || head.find("%MO") != std::string_view::npos ||
+         head.find("%ADD") != std::string_view::npos || head.find("G04 ") != std::string_view::npos;
+}
+
+}  // namespace
+
+bool looks_like_excellon(std::string_view head) {
+  if (is_gerber(head)) return true;  // routed to the reader, which refuses it with one clear line
+  if (head.rfind("M48", 0) == 0 || head.find("\nM48") != std::string_view::npos) return true;
+  // No header (old OrCAD): a tool definition with a diameter, then hits.
+  std::size_t t = head.find("\nT");
+  if (head.rfind("T", 0) == 0) t = 0;
+  if (t != std::string_view::npos) {
+    std::size_t start = t == 0 ? 0 : t + 1;
+    std::size_t c = head.find('C', start);
+    std::size_t end = head.find('\n', start);
+    if (c != std::string_view::npos && c < end && std::isdigit(static_cast<unsigned char>(head[start + 1]))) return true;
+  }
+  return false;
+}
+
+LoadedHoles parse_excellon(const std::string& path, std::string_view data, const InputOptions& options) {
+  if (is_gerber(data.substr(0, 65536))) {
+    std::size_t at = data.find("%FS");
+    if (at == std::string_view::npos) at = data.find("%MO");
+    const auto line = static_cast<std::uint32_t>(1 + std::count(data.begin(), data.begin() + static_cast<long>(std::min(at, data.size())), '\n'));
+    throw UserError(path, line, "RS-274X Gerber drill data is not supported; export the drill file as Excellon");
+  }
+  Reader reader(path, options);
+  return reader.run(data);
+}
+
+std::string write_excellon(const std::vector<gcode::ToolPass>& passes, bool metric, const std::string& source) {
+  // Explicit decimal points: every reader agrees on them, whatever it assumes about zeros.
+  const int decimals = metric ? 3 : 4;
+  const double scale = metric ? 1.0 : 1.0 / kInch;
+  std::ostringstream out;
+  out << "M48\n";
+  out << ";FILE_FORMAT=" << (metric ? "3:3" : "2:4") << "\n";
+  out << ";DRILL ORDER OPTIMIZED BY ACODRILL FROM " << source << "\n";
+  out << (metric ? "METRIC,TZ" : "INCH,TZ") << "\n";
+  for (const auto& p : passes) {
+    out << "T" << p.tool.number << "C" << gcode::format_number(p.tool.diameter_mm * scale, decimals) << "\n";
+  }
+  out << "%\nG90\nG05\n";
+  for (const auto& p : passes) {
+    out << "T" << p.tool.number << "\n";
+    for (const aco::Point2& h : p.holes) {
+      out << "X" << gcode::format_number(h.x * scale, decimals) << "Y" << gcode::format_number(h.y * scale, decimals)
+          << "\n";
+    }
+  }
+  out << "T0\nM30\n";
+  return out.str();
 }
 
 }  // namespace app

@@ -4,6 +4,7 @@
  * breaks ties): DXF, Excellon, the thesis's XML hole map, CSV and TSPLIB.
  * Each reader returns holes in mm; errors are UserError with file and line.
  */
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,7 @@ struct LoadedHoles {
   std::size_t duplicates_removed = 0;
   std::size_t skipped_by_filter = 0;
   std::string name;  // TSPLIB NAME or the file's stem
+  std::optional<bool> metric;  // the units the file itself is written in, where it says (Excellon)
 };
 
 InputFormat detect_format(const std::string& path, std::string_view data);

@@ -1,0 +1,193 @@
+// Excellon in and out: real drill files from Eagle, KiCad, Altium, OrCAD,
+// gEDA, Mentor and others (hits cross-checked against gerbv), the dialect
+// corners one by one, bad input, and round trips through our reader and gerbv.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <set>
+
+#include "app/errors.h"
+#include "app/excellon.h"
+#include "app/inputs.h"
+#include "test_util.h"
+
+using testutil::data;
+using testutil::shell_quote;
+using testutil::slurp;
+using testutil::spit;
+
+namespace {
+
+struct Hit {
+  double x, y, d;
+};
+
+std::vector<Hit> hits_csv(const std::string& text) {
+  std::vector<Hit> out;
+  for (const aco::Hole& h : testutil::read_holes_csv(text)) out.push_back({h.center.x, h.center.y, h.diameter});
+  return out;
+}
+
+// Same set of (x, y, d) within tol; returns a description of the difference.
+std::string diff(std::vector<Hit> got, std::vector<Hit> want, double tol, double dtol) {
+  std::string problems;
+  std::vector<char> used(got.size(), 0);
+  for (const Hit& w : want) {
+    bool found = false;
+    for (std::size_t i = 0; i < got.size() && !found; ++i) {
+      if (std::fabs(got[i].x - w.x) <= tol && std::fabs(got[i].y - w.y) <= tol && std::fabs(got[i].d - w.d) <= dtol) {
+        used[i] = 1;  // duplicates in `want` may match one hit: `holes` drops exact duplicates
+        found = true;
+      }
+    }
+    if (!found) problems += " missing(" + std::to_string(w.x) + "," + std::to_string(w.y) + ")";
+  }
+  for (std::size_t i = 0; i < got.size(); ++i) {
+    if (!used[i]) problems += " extra(" + std::to_string(got[i].x) + "," + std::to_string(got[i].y) + ")";
+  }
+  return problems;
+}
+
+app::LoadedHoles parse(const std::string& text, app::InputOptions o = {}) {
+  return app::parse_excellon("t.drl", text, o);
+}
+
+std::string error_of(const std::string& text) {
+  try {
+    parse(text);
+  } catch (const app::UserError& e) {
+    return e.where_what();
+  }
+  return "no error";
+}
+
+std::vector<std::string> fixtures() {
+  std::vector<std::string> out;
+  for (const auto& e : std::filesystem::directory_iterator(data("real-excellon"))) {
+    if (std::filesystem::exists(e.path().string() + ".hits.csv")) out.push_back(e.path().string());
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+}  // namespace
+
+class ExcellonFixture : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(ExcellonFixture, every_hit_with_its_tool_diameter) {
+  const std::string path = GetParam();
+  app::LoadedHoles got = app::load_holes(path, {});
+  EXPECT_EQ(got.format, app::InputFormat::Excellon) << "chosen by content";
+  std::vector<Hit> want = hits_csv(slurp(path + ".hits.csv"));
+  std::vector<Hit> mine;
+  for (const auto& h : got.holes) mine.push_back({h.center.x, h.center.y, h.diameter});
+  EXPECT_EQ(diff(mine, want, 1e-6, 1e-6), "") << path;
+  // Every hit is there: distinct positions count the same.
+  std::set<std::pair<long long, long long>> distinct;
+  for (const Hit& w : want) distinct.insert({std::llround(w.x * 1e5), std::llround(w.y * 1e5)});
+  EXPECT_EQ(got.holes.size(), distinct.size()) << path;
+}
+
+std::string fixture_name(const ::testing::TestParamInfo<std::string>& param) {
+  std::string s = std::filesystem::path(param.param).filename().string();
+  for (char& c : s) if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+  return s;
+}
+INSTANTIATE_TEST_SUITE_P(real_files, ExcellonFixture, ::testing::ValuesIn(fixtures()), fixture_name);
+
+TEST(excellon_test, gerber_form_drill_data_is_refused_with_one_line) {
+  auto r = testutil::acodrill_run("holes " + shell_quote(data("real-excellon/orcad_rs232_GERBER_FORMAT_drill.drd")) +
+                                  " --format csv");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_EQ(testutil::count_lines(r.err), 1);
+  EXPECT_THAT(r.err, ::testing::HasSubstr("Gerber"));
+}
+
+TEST(excellon_test, zero_suppression_and_formats) {
+  // TZ (leading zeros dropped): digits count from the right.
+  auto tz = parse("M48\nINCH,TZ\nT1C0.02\n%\nT1\nX1875Y350\nM30\n");
+  ASSERT_EQ(tz.holes.size(), 1u);
+  EXPECT_NEAR(tz.holes[0].center.x, 0.1875 * 25.4, 1e-9);
+  EXPECT_NEAR(tz.holes[0].center.y, 0.035 * 25.4, 1e-9);
+  // LZ (trailing zeros dropped): digits count from the left, 2:4 → "03185" = 03.185.
+  auto lz = parse("M48\nINCH,LZ\nT1C0.02\n%\nT1\nX03185Y2\nM30\n");
+  EXPECT_NEAR(lz.holes[0].center.x, 3.185 * 25.4, 1e-9);
+  EXPECT_NEAR(lz.holes[0].center.y, 20.0 * 25.4, 1e-9);
+  // METRIC with a 000.000 template and LZ.
+  auto m = parse("M48\nMETRIC,LZ,000.000\nT1C0.8\n%\nT1\nX0125Y001\nM30\n");
+  EXPECT_NEAR(m.holes[0].center.x, 12.5, 1e-9);
+  EXPECT_NEAR(m.holes[0].center.y, 1.0, 1e-9);
+  // Explicit decimals, a KiCad FORMAT comment (the last statement wins).
+  auto k = parse("M48\n;FORMAT={3:3/ absolute / metric / decimal}\nMETRIC\nT1C0.8\n%\nT1\nX1.5Y-2.25\nM30\n");
+  EXPECT_NEAR(k.holes[0].center.x, 1.5, 1e-9);
+  EXPECT_NEAR(k.holes[0].center.y, -2.25, 1e-9);
+  auto f = parse("M48\n;FILE_FORMAT=2:4\n;FILE_FORMAT=3:3\nMETRIC,TZ\nT1C1\n%\nT1\nX1500Y2\nM30\n");
+  EXPECT_NEAR(f.holes[0].center.x, 1.5, 1e-9);
+}
+
+TEST(excellon_test, modal_incremental_offsets_and_repeats) {
+  auto r = parse("M48\nMETRIC,TZ\nT1C1.0\nT2C1.0\n%\nT1\nX10000Y20000\nY30000\nG91\nX1000\nG90\nG93X100000Y0\nX0Y0\n"
+                 "T2\nX0Y0\nR3X1000Y0\nM30\n");
+  ASSERT_EQ(r.holes.size(), 8u);
+  EXPECT_NEAR(r.holes[1].center.y, 30.0, 1e-9);  // modal X
+  EXPECT_NEAR(r.holes[2].center.x, 11.0, 1e-9);  // incremental
+  EXPECT_NEAR(r.holes[3].center.x, 100.0, 1e-9) << "G93 moves the zero point";
+  EXPECT_EQ(r.holes[4].layer, "T2") << "equal diameters on two tools stay two tools";
+  EXPECT_NEAR(r.holes[7].center.x, 103.0, 1e-9) << "R3: three more hits, 1 mm apart";
+}
+
+TEST(excellon_test, units_before_the_header_and_no_header_at_all) {
+  auto m71 = parse("M71\nM48\nT1C0.5\n%\nT1\nX1000Y1000\nM30\n");
+  EXPECT_NEAR(m71.holes[0].center.x, 1.0, 1e-9);
+  EXPECT_NEAR(m71.holes[0].diameter, 0.5, 1e-9);
+  auto orcad = parse("%\nT1C0.028F200S100\nX002250Y002300\nM30\n");
+  ASSERT_EQ(orcad.holes.size(), 1u);
+  EXPECT_NEAR(orcad.holes[0].diameter, 0.7112, 1e-9);
+  EXPECT_TRUE(app::looks_like_excellon("%\nT1C0.028F200S100\nX002250Y002300\n"));
+}
+
+TEST(excellon_test, slots_and_routes_are_not_hits_and_are_reported) {
+  auto r = parse("M48\nINCH,TZ\nT1C0.5\n%\nT1\nX0Y0G85X5000Y0\nG00X1000Y1000\nM15\nG01X2000\nM16\nG05\nX3000Y3000\nM30\n");
+  ASSERT_EQ(r.holes.size(), 1u);
+  EXPECT_NEAR(r.holes[0].center.x, 0.3 * 25.4, 1e-9);
+  ASSERT_EQ(r.warnings.size(), 1u);
+  EXPECT_THAT(r.warnings[0].message, ::testing::HasSubstr("1 G85 slot(s) and 2 routed move(s)"));
+}
+
+TEST(excellon_test, bad_input_names_file_and_line) {
+  EXPECT_THAT(error_of("M48\nINCH\nT1C0.5\n%\nX100Y100\nM30\n"), ::testing::HasSubstr("t.drl:5: drill hit before any tool"));
+  EXPECT_THAT(error_of("M48\nINCH\nT1C0.5\n%\nT2\nX100Y100\nM30\n"), ::testing::HasSubstr("t.drl:5: tool T2 is not defined"));
+  EXPECT_THAT(error_of("M48\nINCH\nT1C0.5\n%\nT1\nhello world\nM30\n"), ::testing::HasSubstr("t.drl:6: unexpected"));
+  EXPECT_THAT(error_of("M48\nINCH\nT1C-0.5\n%\nT1\nX1Y1\nM30\n"), ::testing::HasSubstr("t.drl:3: tool T1 has a negative diameter"));
+  EXPECT_THAT(error_of("M48\nINCH\nT1C0.5\n%\nT1\nX12a4Y1\nM30\n"), ::testing::HasSubstr("t.drl:6:"));
+  EXPECT_THAT(error_of("M48\nINCH\nT1C0.5\n%\nT1\nX1\x01Y1\nM30\n"), ::testing::HasSubstr("control character"));
+}
+
+TEST(excellon_test, what_we_write_reads_back_to_the_same_holes_in_our_reader_and_gerbv) {
+  testutil::TempDir t;
+  for (const char* input : {"real-excellon/eagle_arduino_uno_inch_tz.drd", "real-excellon/unknown_m71_g93_tzsupp.exc",
+                            "real-excellon/altium_pic18f14k50_inch_lz_pth_npth.txt"}) {
+    const std::string in = data(input);
+    auto r = testutil::acodrill_run("plan " + shell_quote(in) + " -o " + shell_quote(t / "p.nc") + " --excellon " +
+                                    shell_quote(t / "out.drl") + " -q --iterations 20");
+    ASSERT_EQ(r.code, 0) << r.err;
+    std::vector<Hit> original;
+    for (const auto& h : app::load_holes(in, {}).holes) original.push_back({h.center.x, h.center.y, h.diameter});
+    std::vector<Hit> ours;
+    for (const auto& h : app::load_holes(t / "out.drl", {}).holes) ours.push_back({h.center.x, h.center.y, h.diameter});
+    EXPECT_EQ(ours.size(), original.size()) << input;
+    EXPECT_EQ(diff(ours, original, 0.0006, 0.0006), "") << input;
+
+    // gerbv (Debian) reads our file and writes it again in its own Excellon; we read that.
+    ASSERT_EQ(std::system("command -v gerbv >/dev/null"), 0) << "gerbv missing: scripts/test installs it";
+    auto g = testutil::run("gerbv -x drill -o " + shell_quote(t / "gerbv.drl") + " " + shell_quote(t / "out.drl"));
+    ASSERT_EQ(g.code, 0) << g.err;
+    std::vector<Hit> theirs;
+    for (const auto& h : app::load_holes(t / "gerbv.drl", {}).holes) theirs.push_back({h.center.x, h.center.y, h.diameter});
+    EXPECT_EQ(theirs.size(), original.size()) << input;
+    // gerbv writes inch 2:4 and 3-decimal diameters: 2.54 µm and 12.7 µm steps.
+    EXPECT_EQ(diff(theirs, original, 0.0026, 0.0128), "") << input;
+  }
+}
