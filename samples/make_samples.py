@@ -14,6 +14,7 @@ parts: bolt circles, grids, edge rows and flange patterns, drawn in inches.
 import math
 import os
 import random
+import re
 import sys
 
 import ezdxf
@@ -128,12 +129,34 @@ def write(folder, name, w, h, holes, inches):
     msp.add_lwpolyline([(0, 0), (w, 0), (w, h), (0, h)], close=True, dxfattribs={"layer": "OUTLINE"})
     for x, y, d in holes:
         msp.add_circle((x, y), d / 2, dxfattribs={"layer": "HOLES"})
-    doc.saveas(os.path.join(folder, name + ".dxf"))
+    # Fixed dates and GUIDs, so regenerating changes no byte that matters.
+    doc.header["$TDCREATE"] = 2460000.5
+    doc.header["$FINGERPRINTGUID"] = "{00000000-0000-0000-0000-000000000001}"
+    doc.header["$VERSIONGUID"] = "{00000000-0000-0000-0000-000000000002}"
+    path = os.path.join(folder, name + ".dxf")
+    doc.saveas(path)
+    # ezdxf stamps a fresh $VERSIONGUID and a save time on every save; pin them.
+    with open(path) as f:
+        text = f.read()
+    text = re.sub(r"(\$VERSIONGUID\n  2\n)\{[0-9A-F-]+\}", r"\1{00000000-0000-0000-0000-000000000002}", text)
+    text = re.sub(r"(\$TDUPDATE\n 40\n)[0-9.]+", r"\g<1>2460000.5", text)
+    text = re.sub(r"(\d+\.\d+\.\d+) @ \d{4}-\d\d-\d\dT[0-9:.+]+", r"\1 @ 2024-01-01T00:00:00+00:00", text)
+    with open(path, "w") as f:
+        f.write(text)
     scale = IN if inches else 1.0
     with open(os.path.join(folder, name + ".holes.csv"), "w") as f:
         f.write("x_mm,y_mm,diameter_mm,layer\n")
         for x, y, d in holes:
             f.write(f"{x * scale:.6f},{y * scale:.6f},{d * scale:.6f},HOLES\n")
+
+
+def write_xml(folder, name, holes):
+    """The thesis's XML hole map (see README, "Input formats"), in inches."""
+    with open(os.path.join(folder, name + ".xml"), "w") as f:
+        f.write(f'<?xml version="1.0" encoding="UTF-8"?>\n<holemap units="inch" name="{name.upper()}">\n')
+        for x, y, d in holes:
+            f.write(f'  <hole x="{x:.4f}" y="{y:.4f}" diameter="{d:.4f}"/>\n')
+        f.write("</holemap>\n")
 
 
 def main():
@@ -143,6 +166,7 @@ def main():
         write(folder, f"plate{n}", w, h, holes, inches=True)
     w, h, holes = circular21()
     write(folder, "circular21", w, h, holes, inches=True)
+    write_xml(folder, "circular21", holes)
     for size in (8, 15):
         for n in (10, 21, 35, 70):
             w, h, holes = square_plate(float(size), n, seed=size * 100 + n)
@@ -152,4 +176,8 @@ def main():
 
 
 if __name__ == "__main__":
+    # ezdxf orders some objects through Python's salted string hash: fix the salt
+    # so that every run writes the same bytes.
+    if os.environ.get("PYTHONHASHSEED") != "0":
+        os.execve(sys.executable, [sys.executable] + sys.argv, {**os.environ, "PYTHONHASHSEED": "0"})
     main()

@@ -219,3 +219,45 @@ TEST(cli_test, help_and_version) {
   auto bench = testutil::run(q(std::string(ACO_BUILD_DIR) + "/bin/acobench") + " --help");
   EXPECT_EQ(bench.code, 0);
 }
+
+TEST(cli_test, golden_programs_are_byte_identical) {
+  // tests/golden/cases.txt lists NAME|arguments; scripts/update-golden rewrites them on purpose.
+  std::istringstream cases(slurp(testutil::source_dir() + "/tests/golden/cases.txt"));
+  int checked = 0;
+  TempDir t;
+  for (std::string line; std::getline(cases, line);) {
+    if (line.empty() || line[0] == '#') continue;
+    const std::string name = line.substr(0, line.find('|')), args = line.substr(line.find('|') + 1);
+    auto r = testutil::run("cd " + q(testutil::source_dir()) + " && " + q(testutil::acodrill()) + " plan " + args +
+                           " -o " + q(t / "p.nc") + " --quiet");
+    ASSERT_EQ(r.code, 0) << name << ": " << r.err;
+    EXPECT_EQ(slurp(t / "p.nc"), slurp(testutil::source_dir() + "/tests/golden/" + name + ".nc"))
+        << name << " changed; if intended, run scripts/update-golden and review the diff";
+    ++checked;
+  }
+  EXPECT_GE(checked, 5);
+}
+
+TEST(cli_test, route_pictures_are_well_formed_and_render) {
+  TempDir t;
+  const std::string sample = testutil::source_dir() + "/samples/pcb_mixed.dxf";
+  auto r = acodrill_run("plan " + q(sample) + " -o " + q(t / "p.nc") + " --svg " + q(t / "r.svg") + " --svg-compare " +
+                        q(t / "c.svg") + " -q --iterations 20");
+  ASSERT_EQ(r.code, 0) << r.err;
+  for (const char* svg : {"r.svg", "c.svg"}) {
+    const std::string text = slurp(t / svg);
+    EXPECT_THAT(text, ::testing::StartsWith("<?xml"));
+    EXPECT_THAT(text, ::testing::HasSubstr("</svg>\n"));
+    // One circle per hole (plus none else), and a legend that names the savings.
+    std::size_t circles = 0;
+    for (std::size_t at = text.find("<circle"); at != std::string::npos; at = text.find("<circle", at + 1)) ++circles;
+    EXPECT_EQ(circles, std::string(svg) == "c.svg" ? 212u : 106u);
+    EXPECT_THAT(text, ::testing::HasSubstr("min saved"));
+    auto render = testutil::run("rsvg-convert " + q(t / svg) + " -o " + q(t / "out.png"));
+    EXPECT_EQ(render.code, 0) << "rsvg-convert could not render " << svg << ": " << render.err;
+    EXPECT_GT(std::filesystem::file_size(t / "out.png"), 1000u);
+  }
+  auto xml = acodrill_run("plan " + q(testutil::source_dir() + "/samples/circular21.xml") + " -o " + q(t / "x.nc") + " -q");
+  EXPECT_EQ(xml.code, 0) << xml.err;
+  EXPECT_EQ(acodrill_run("verify " + q(t / "x.nc") + " --holes " + q(testutil::source_dir() + "/samples/circular21.xml") + " -q").code, 0);
+}

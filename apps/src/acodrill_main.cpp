@@ -19,6 +19,7 @@
 #include "app/inputs.h"
 #include "app/plan.h"
 #include "app/report.h"
+#include "app/svg.h"
 #include "gcode/interpreter.h"
 #include "gcode/program.h"
 
@@ -230,6 +231,8 @@ int cmd_plan(const PlanArgs& a, const SolverArgs& s, const InputArgs& in_args) {
   app::ReportContext ctx{source, a.output, loaded.holes.size()};
   if (!a.report.empty()) app::write_file_atomic(a.report, app::report_json(loaded.holes, plan, ctx));
   if (!a.convergence.empty()) app::write_file_atomic(a.convergence, app::convergence_csv(plan));
+  if (!a.svg.empty()) app::write_file_atomic(a.svg, app::route_svg(loaded.holes, plan, o, loaded.name));
+  if (!a.svg_compare.empty()) app::write_file_atomic(a.svg_compare, app::compare_svg(loaded.holes, plan, o, loaded.name));
   if (!a.excellon.empty()) {
     // The input's own units when it is Excellon, unless --units chose others.
     const bool metric = a.units.empty() ? loaded.metric.value_or(true) : o.program.units == gcode::Units::Mm;
@@ -258,6 +261,8 @@ int cmd_plan(const PlanArgs& a, const SolverArgs& s, const InputArgs& in_args) {
     if (!a.report.empty()) std::fprintf(stderr, "  report: %s\n", a.report.c_str());
     if (!a.convergence.empty()) std::fprintf(stderr, "  convergence: %s\n", a.convergence.c_str());
     if (!a.excellon.empty()) std::fprintf(stderr, "  excellon: %s\n", a.excellon.c_str());
+    if (!a.svg.empty()) std::fprintf(stderr, "  picture: %s\n", a.svg.c_str());
+    if (!a.svg_compare.empty()) std::fprintf(stderr, "  comparison: %s\n", a.svg_compare.c_str());
   }
   return 0;
 }
@@ -409,6 +414,7 @@ int main(int argc, char** argv) {
   plan_cmd->add_option("-o,--output", plan.output, "Program to write (- = stdout)")->required();
   plan_cmd->add_option("--report", plan.report, "Write a JSON report: holes, tools, travel, time, solver");
   plan_cmd->add_option("--svg", plan.svg, "Write a picture of the route (SVG)");
+  plan_cmd->add_option("--svg-compare", plan.svg_compare, "Write input order and optimized route side by side (SVG)");
   plan_cmd->add_option("--convergence", plan.convergence, "Write best length by iteration and time (CSV)");
   plan_cmd->add_option("--excellon", plan.excellon, "Also write the optimized order as an Excellon drill file");
   plan_cmd->add_option("--dialect", plan.dialect, "haas (default) | fanuc | linuxcnc");

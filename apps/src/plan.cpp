@@ -51,6 +51,8 @@ Machine load_machine(const std::string& path) {
   m.rapid_z_mm_min = json_number(j, "rapid_z_mm_min", m.rapid_z_mm_min, path);
   m.accel_mm_s2 = json_number(j, "accel_mm_s2", m.accel_mm_s2, path);
   m.tool_change_s = json_number(j, "tool_change_s", m.tool_change_s, path);
+  m.max_rpm = static_cast<int>(json_number(j, "max_rpm", m.max_rpm, path));
+  if (m.max_rpm < 1) throw UserError(path, 0, "max_rpm must be >= 1");
   if (j.contains("linear_rapids")) {
     if (!j["linear_rapids"].is_boolean()) throw UserError(path, 0, "\"linear_rapids\" must be true or false");
     m.linear_rapids = j["linear_rapids"].get<bool>();
@@ -128,7 +130,7 @@ ToolTable load_tool_table(const std::string& path) {
   return t;
 }
 
-ToolTable generate_tool_table(const aco::HoleSet& holes, Material material, double thickness_mm) {
+ToolTable generate_tool_table(const aco::HoleSet& holes, Material material, double thickness_mm, int max_rpm) {
   std::vector<long long> keys;  // diameters in micrometres
   keys.reserve(holes.size());
   for (const aco::Hole& h : holes) keys.push_back(std::llround(h.diameter * 1000.0));
@@ -136,11 +138,11 @@ ToolTable generate_tool_table(const aco::HoleSet& holes, Material material, doub
   keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
   // Cutting speed (m/min) and feed per revolution as a fraction of the
   // diameter, for HSS drills (Machinery's Handbook ranges, conservative end).
-  double vc = 20.0, feed_per_d = 0.015, max_rpm = 8100.0;
+  double vc = 20.0, feed_per_d = 0.015;
   switch (material) {
     case Material::Steel: vc = 20.0; feed_per_d = 0.015; break;
     case Material::Aluminium: vc = 60.0; feed_per_d = 0.025; break;
-    case Material::Pcb: vc = 100.0; feed_per_d = 0.02; max_rpm = 60000.0; break;
+    case Material::Pcb: vc = 100.0; feed_per_d = 0.02; break;
   }
   ToolTable t;
   t.generated = true;
@@ -151,7 +153,7 @@ ToolTable generate_tool_table(const aco::HoleSet& holes, Material material, doub
     tool.number = ++number;
     tool.diameter_mm = static_cast<double>(k) / 1000.0;
     const double d = std::max(tool.diameter_mm, 0.1);
-    tool.spindle_rpm = static_cast<int>(std::clamp(std::round(1000.0 * vc / (M_PI * d)), 100.0, max_rpm));
+    tool.spindle_rpm = static_cast<int>(std::clamp(std::round(1000.0 * vc / (M_PI * d)), 100.0, std::max(100.0, double(max_rpm))));
     tool.feed_mm_min = std::max(10.0, std::round(tool.spindle_rpm * feed_per_d * d));
     // Through the plate, plus the 118° point (0.3 D) and 0.5 mm to break through.
     tool.depth_mm = -(thickness_mm + 0.3 * d + 0.5);
@@ -249,7 +251,7 @@ PlanResult plan_job(const aco::HoleSet& holes, const PlanOptions& options, const
   }
 
   ToolTable table = options.tools ? *options.tools
-                                  : generate_tool_table(holes, options.material, options.thickness_mm);
+                                  : generate_tool_table(holes, options.material, options.thickness_mm, m.max_rpm);
   PlanResult result;
   result.groups.resize(table.entries.size());
   std::vector<std::string> unfit;

@@ -24,6 +24,7 @@ struct Machine {
   double accel_mm_s2 = 2500.0;       // per axis
   bool linear_rapids = false;        // HAAS G00 moves each axis at its own rate ("dogleg")
   double tool_change_s = 4.2;        // chip to chip
+  int max_rpm = 8100;                // spindle limit; generated tools stay under it
   aco::Point2 start{0.0, 0.0};       // where the spindle is at the start and returns to (work XY)
   double x_min = -762.0, x_max = 762.0, y_min = -406.0, y_max = 406.0;  // reachable work XY
 };
@@ -48,7 +49,7 @@ struct ToolTable {
 
 ToolTable load_tool_table(const std::string& path);
 // One tool per distinct diameter (to 0.001 mm), ascending, feeds and speeds from the material.
-ToolTable generate_tool_table(const aco::HoleSet& holes, Material material, double thickness_mm);
+ToolTable generate_tool_table(const aco::HoleSet& holes, Material material, double thickness_mm, int max_rpm);
 
 enum class Objective { Distance, Time };
 

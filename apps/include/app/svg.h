@@ -1,0 +1,17 @@
+#pragma once
+// The route as a picture (SVG): holes to scale and coloured by tool, the path
+// with its direction, the start, and a legend with lengths and minutes saved.
+#include <string>
+
+#include "app/plan.h"
+
+namespace app {
+
+// The optimized route.
+std::string route_svg(const aco::HoleSet& holes, const PlanResult& plan, const PlanOptions& options,
+                      const std::string& title);
+// Input order and optimized order side by side.
+std::string compare_svg(const aco::HoleSet& holes, const PlanResult& plan, const PlanOptions& options,
+                        const std::string& title);
+
+}  // namespace app

@@ -1,0 +1,167 @@
+#include "app/svg.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "gcode/program.h"
+
+namespace app {
+
+namespace {
+
+// Colour-blind-safe palette (Okabe & Ito 2008), cycled for many tools.
+const char* kPalette[] = {"#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9", "#F0E442", "#000000"};
+
+std::string num(double v) { return gcode::format_number(v, 3); }
+
+std::string escape(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    switch (c) {
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '&': out += "&amp;"; break;
+      case '"': out += "&quot;"; break;
+      default: out += (static_cast<unsigned char>(c) < 32) ? ' ' : c;
+    }
+  }
+  return out;
+}
+
+struct Box {
+  double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
+  void add(double x, double y, double r = 0) {
+    x0 = std::min(x0, x - r);
+    y0 = std::min(y0, y - r);
+    x1 = std::max(x1, x + r);
+    y1 = std::max(y1, y + r);
+  }
+};
+
+// One panel: the route of `orders` (one per tool group) in drawing units,
+// placed with its lower-left drawing corner at (ox, oy) of the page.
+void panel(std::ostringstream& out, const aco::HoleSet& holes, const PlanResult& plan, const PlanOptions& options,
+           const std::vector<const aco::Order*>& orders, const Box& box, double scale, double ox, double oy,
+           const std::string& heading, double travel_mm, double time_s) {
+  const double h = (box.y1 - box.y0) * scale;
+  auto X = [&](double x) { return ox + (x - box.x0) * scale; };
+  auto Y = [&](double y) { return oy + h - (y - box.y0) * scale; };  // CAD Y points up, SVG Y down
+  out << "<g>\n<text x=\"" << num(ox) << "\" y=\"" << num(oy - 8) << "\" font-size=\"14\" font-weight=\"bold\">"
+      << escape(heading) << " — " << num(travel_mm / 1000.0) << " m travel, " << gcode::format_number(time_s / 60.0, 2)
+      << " min</text>\n";
+  out << "<rect x=\"" << num(ox) << "\" y=\"" << num(oy) << "\" width=\"" << num((box.x1 - box.x0) * scale)
+      << "\" height=\"" << num(h) << "\" fill=\"#fafafa\" stroke=\"#cccccc\"/>\n";
+  // Path, tool by tool, from the start and back to it.
+  aco::Point2 at = options.machine.start;
+  for (std::size_t g = 0; g < plan.groups.size(); ++g) {
+    const char* colour = kPalette[g % 8];
+    out << "<polyline fill=\"none\" stroke=\"" << colour << "\" stroke-width=\"1.2\" stroke-opacity=\"0.8\" "
+        << "marker-mid=\"url(#arrow" << g % 8 << ")\" points=\"" << num(X(at.x)) << "," << num(Y(at.y));
+    for (aco::HoleIndex i : *orders[g]) {
+      const aco::Point2 p = holes[i].center;
+      // A midpoint vertex carries the direction arrow in the middle of each leg.
+      out << " " << num(X((at.x + p.x) / 2)) << "," << num(Y((at.y + p.y) / 2)) << " " << num(X(p.x)) << ","
+          << num(Y(p.y));
+      at = p;
+    }
+    out << "\"/>\n";
+  }
+  const aco::Point2 home = options.machine.start;
+  out << "<polyline fill=\"none\" stroke=\"#888888\" stroke-width=\"1\" stroke-dasharray=\"4 3\" points=\"" << num(X(at.x))
+      << "," << num(Y(at.y)) << " " << num(X(home.x)) << "," << num(Y(home.y)) << "\"/>\n";
+  // Holes to scale (at least a visible dot), coloured by tool.
+  for (std::size_t g = 0; g < plan.groups.size(); ++g) {
+    out << "<g fill=\"" << kPalette[g % 8] << "\" fill-opacity=\"0.55\" stroke=\"" << kPalette[g % 8] << "\">\n";
+    for (aco::HoleIndex i : *orders[g]) {
+      const aco::Hole& hole = holes[i];
+      out << "<circle cx=\"" << num(X(hole.center.x)) << "\" cy=\"" << num(Y(hole.center.y)) << "\" r=\""
+          << num(std::max(hole.diameter / 2 * scale, 1.5)) << "\"/>\n";
+    }
+    out << "</g>\n";
+  }
+  out << "<rect x=\"" << num(X(home.x) - 5) << "\" y=\"" << num(Y(home.y) - 5)
+      << "\" width=\"10\" height=\"10\" fill=\"#000000\"/>\n<text x=\"" << num(X(home.x) + 8) << "\" y=\""
+      << num(Y(home.y) + 4) << "\" font-size=\"11\">start</text>\n</g>\n";
+}
+
+std::string document(const aco::HoleSet& holes, const PlanResult& plan, const PlanOptions& options,
+                     const std::string& title, bool compare) {
+  Box box;
+  box.add(options.machine.start.x, options.machine.start.y);
+  for (const aco::Hole& h : holes) box.add(h.center.x, h.center.y, h.diameter / 2);
+  const double pad = std::max({(box.x1 - box.x0) * 0.03, (box.y1 - box.y0) * 0.03, 1.0});
+  box.x0 -= pad;
+  box.y0 -= pad;
+  box.x1 += pad;
+  box.y1 += pad;
+  // Each panel about 700 px on its longer side.
+  const double scale = 700.0 / std::max(box.x1 - box.x0, box.y1 - box.y0);
+  const double pw = (box.x1 - box.x0) * scale, ph = (box.y1 - box.y0) * scale;
+  const double margin = 30, legend_h = 40 + 18.0 * static_cast<double>(plan.groups.size() + 2);
+  const double width = margin * 2 + (compare ? pw * 2 + margin : pw);
+  const double height = margin * 2 + ph + legend_h + 20;
+  std::ostringstream out;
+  out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+      << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << num(width) << "\" height=\"" << num(height)
+      << "\" viewBox=\"0 0 " << num(width) << " " << num(height) << "\" font-family=\"sans-serif\">\n"
+      << "<title>" << escape(title) << "</title>\n<defs>\n";
+  for (int c = 0; c < 8; ++c) {
+    out << "<marker id=\"arrow" << c << "\" viewBox=\"0 0 10 10\" refX=\"5\" refY=\"5\" markerWidth=\"5\" "
+        << "markerHeight=\"5\" orient=\"auto\"><path d=\"M0,1 L10,5 L0,9 z\" fill=\"" << kPalette[c] << "\"/></marker>\n";
+  }
+  out << "</defs>\n<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>\n";
+  std::vector<const aco::Order*> input, optimized;
+  for (const ToolGroup& g : plan.groups) {
+    input.push_back(&g.input_order);
+    optimized.push_back(&g.optimized);
+  }
+  const double top = margin + 10;
+  if (compare) {
+    panel(out, holes, plan, options, input, box, scale, margin, top, "input order", plan.input_order.travel_mm,
+          plan.input_order.time_s);
+    panel(out, holes, plan, options, optimized, box, scale, margin * 2 + pw, top, "optimized",
+          plan.optimized.travel_mm, plan.optimized.time_s);
+  } else {
+    panel(out, holes, plan, options, optimized, box, scale, margin, top, title, plan.optimized.travel_mm,
+          plan.optimized.time_s);
+  }
+  // Legend.
+  double y = top + ph + 30;
+  out << "<g font-size=\"12\">\n";
+  for (std::size_t g = 0; g < plan.groups.size(); ++g) {
+    const ToolGroup& group = plan.groups[g];
+    out << "<rect x=\"" << num(margin) << "\" y=\"" << num(y - 10) << "\" width=\"12\" height=\"12\" fill=\""
+        << kPalette[g % 8] << "\"/><text x=\"" << num(margin + 18) << "\" y=\"" << num(y) << "\">T"
+        << group.tool.number << "  Ø " << gcode::format_number(group.tool.diameter_mm, 3) << " mm  "
+        << group.optimized.size() << " holes  " << gcode::to_string(group.tool.cycle) << "</text>\n";
+    y += 18;
+  }
+  const double saved_min = (plan.input_order.time_s - plan.optimized.time_s) / 60.0;
+  const double saved_pct = plan.input_order.travel_mm > 0
+                               ? 100.0 * (plan.input_order.travel_mm - plan.optimized.travel_mm) / plan.input_order.travel_mm
+                               : 0.0;
+  out << "<text x=\"" << num(margin) << "\" y=\"" << num(y + 4) << "\">travel: input order "
+      << gcode::format_number(plan.input_order.travel_mm, 1) << " mm, nearest neighbour "
+      << gcode::format_number(plan.nearest_neighbor.travel_mm, 1) << " mm, optimized "
+      << gcode::format_number(plan.optimized.travel_mm, 1) << " mm (" << gcode::format_number(saved_pct, 1)
+      << " % less than input order)</text>\n";
+  out << "<text x=\"" << num(margin) << "\" y=\"" << num(y + 22) << "\">machining time: "
+      << gcode::format_number(plan.optimized.time_s / 60.0, 2) << " min, " << gcode::format_number(saved_min, 2)
+      << " min saved against the input order</text>\n</g>\n</svg>\n";
+  return out.str();
+}
+
+}  // namespace
+
+std::string route_svg(const aco::HoleSet& holes, const PlanResult& plan, const PlanOptions& options,
+                      const std::string& title) {
+  return document(holes, plan, options, title, false);
+}
+
+std::string compare_svg(const aco::HoleSet& holes, const PlanResult& plan, const PlanOptions& options,
+                        const std::string& title) {
+  return document(holes, plan, options, title, true);
+}
+
+}  // namespace app
