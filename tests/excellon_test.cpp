@@ -191,3 +191,23 @@ TEST(excellon_test, what_we_write_reads_back_to_the_same_holes_in_our_reader_and
     EXPECT_EQ(diff(theirs, original, 0.0026, 0.0128), "") << input;
   }
 }
+
+TEST(excellon_test, kicad_writer_on_real_boards_gives_the_boards_holes) {
+  // tests/data/kicad: written by KiCad 6's EXCELLON_WRITER from its demo boards
+  // (tests/kicad/export_kicad_drills.py), with each board's own hole list.
+  int files = 0;
+  for (const auto& e : std::filesystem::directory_iterator(data("kicad"))) {
+    if (e.path().extension() != ".drl") continue;
+    const std::string name = e.path().filename().string();
+    const std::string board = name.substr(0, name.find(name.find("-inch-") != std::string::npos ? "-inch-" : "-mm-"));
+    std::vector<Hit> want = hits_csv(slurp(data("kicad/" + board + ".holes.csv")));
+    std::vector<Hit> got;
+    for (const auto& h : app::load_holes(e.path().string(), {}).holes) got.push_back({h.center.x, h.center.y, h.diameter});
+    const bool inch = name.find("-inch-") != std::string::npos;
+    // Positions within half the file's last digit; diameters as KiCad rounds them in inch.
+    EXPECT_EQ(diff(got, want, inch ? 0.0026 : 0.0006, 0.013), "") << name;
+    EXPECT_EQ(got.size(), want.size()) << name;
+    ++files;
+  }
+  EXPECT_GE(files, 16);
+}
