@@ -1,0 +1,73 @@
+#pragma once
+/**
+ * The benchmark harness behind acobench: a grid of solver settings over
+ * instances, one row per run, a summary per cell (median, mean, standard
+ * deviation, minimum; speedup and efficiency against one thread), the thesis's
+ * tables, and SVG charts.
+ */
+#include <functional>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "aco/solution.h"
+
+namespace app {
+
+struct BenchCell {
+  std::string instance;   // path as given
+  std::string algorithm;  // as, mmas, acs; or a baseline: input, nn, greedy, raster, nn2opt
+  double alpha = 1, beta = -1, rho = -1;  // -1: the algorithm's default
+  int ants = 0, iterations = 0, threads = 1;
+  double time_limit_s = 0;
+  std::string local_search = "2opt+oropt";
+};
+
+struct BenchRun {
+  BenchCell cell;
+  std::string name;  // instance name (file stem)
+  std::size_t n = 0;
+  std::uint64_t seed = 1;
+  double length = 0;
+  std::optional<double> optimum;
+  double wall_s = 0;
+  int iterations_done = 0;
+  std::optional<double> time_to_1pct_s;  // first time within 1 % of the best known length
+  std::vector<double> busy_s;
+  std::vector<aco::TracePoint> trace;
+  // Resolved parameters actually used.
+  double alpha = 0, beta = 0, rho = 0;
+  int ants = 0;
+};
+
+struct BenchInstance {
+  std::string path, name;
+  std::vector<aco::Point2> points;
+  bool tsplib = false;
+  std::optional<double> optimum;
+};
+
+// Known optima: TSPLIB's proven optimal lengths by instance name.
+std::map<std::string, double> known_optima();
+
+BenchInstance load_instance(const std::string& path);
+
+// One run of one cell with one seed.
+BenchRun run_cell(const BenchInstance& instance, const BenchCell& cell, std::uint64_t seed);
+
+// After all runs: time to 1 % of the best known (the optimum, or the best any run found).
+void fill_time_to_target(std::vector<BenchRun>& runs);
+
+std::string runs_csv(const std::vector<BenchRun>& runs);
+std::string summary_csv(const std::vector<BenchRun>& runs);
+
+// The thesis's tables 4.1-4.15 from runs of the thesis preset, with the
+// published times (thesis-results.csv content) beside ours.
+std::string thesis_tables(const std::vector<BenchRun>& runs, const std::string& published_csv);
+
+// SVG charts into `dir`: speedup.svg, convergence.svg, gap_vs_time.svg (when
+// the runs allow them). Returns the files written.
+std::vector<std::string> write_plots(const std::vector<BenchRun>& runs, const std::string& dir);
+
+}  // namespace app

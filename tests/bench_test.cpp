@@ -1,0 +1,115 @@
+// acobench as the contract describes it: the grid, the columns, the summary,
+// the charts, and the thesis preset end to end.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <sstream>
+
+#include "test_util.h"
+
+using testutil::shell_quote;
+using testutil::slurp;
+
+namespace {
+
+std::string acobench() { return shell_quote(std::string(ACO_BUILD_DIR) + "/bin/acobench"); }
+
+std::vector<std::vector<std::string>> csv(const std::string& text) {
+  std::vector<std::vector<std::string>> rows;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) {
+    std::vector<std::string> row;
+    std::stringstream ss(line);
+    for (std::string cell; std::getline(ss, cell, ',');) row.push_back(cell);
+    if (!line.empty() && line.back() == ',') row.push_back("");
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+int column(const std::vector<std::string>& header, const std::string& name) {
+  auto it = std::find(header.begin(), header.end(), name);
+  return it == header.end() ? -1 : static_cast<int>(it - header.begin());
+}
+
+}  // namespace
+
+TEST(bench_test, grid_rows_summary_and_charts) {
+  testutil::TempDir t;
+  const std::string d198 = testutil::data("tsplib/d198.tsp");
+  const std::string plate = testutil::source_dir() + "/samples/plate27.dxf";
+  auto r = testutil::run(acobench() + " --instances " + shell_quote(d198 + "," + plate) +
+                         " --algorithm acs,as,nn --iterations 5 --threads 1,2 --seeds 2 --time-limit 0.02,0.05 --out " +
+                         shell_quote(t / "runs.csv") + " --summary " + shell_quote(t / "summary.csv") + " --plots " +
+                         shell_quote(t / "plots"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  auto runs = csv(slurp(t / "runs.csv"));
+  // 2 instances x 3 algorithms x 2 time limits x 2 threads x 2 seeds.
+  ASSERT_EQ(runs.size(), 1u + 2 * 3 * 2 * 2 * 2);
+  const auto& h = runs[0];
+  for (const char* name : {"instance", "n", "algorithm", "alpha", "beta", "rho", "ants", "iterations", "threads", "seed",
+                           "length", "gap_pct", "wall_s", "iterations_done", "time_to_1pct_s", "busy_s"}) {
+    EXPECT_GE(column(h, name), 0) << name;
+  }
+  int gaps = 0, empty_gaps = 0;
+  for (std::size_t i = 1; i < runs.size(); ++i) {
+    const auto& row = runs[i];
+    const std::string gap = row[column(h, "gap_pct")];
+    if (row[column(h, "instance")] == "d198") {
+      ASSERT_FALSE(gap.empty());
+      EXPECT_GE(std::stod(gap), 0.0) << "never below the proven optimum";
+      ++gaps;
+    } else {
+      EXPECT_TRUE(gap.empty()) << "no optimum is known for a plate";
+      ++empty_gaps;
+    }
+    EXPECT_GT(std::stod(row[column(h, "length")]), 0.0);
+  }
+  EXPECT_EQ(gaps, 24);
+  EXPECT_EQ(empty_gaps, 24);
+  auto summary = csv(slurp(t / "summary.csv"));
+  ASSERT_EQ(summary.size(), 1u + 2 * 3 * 2 * 2);
+  const auto& sh = summary[0];
+  for (const char* name : {"length_median", "length_mean", "length_sd", "length_min", "wall_median_s", "wall_mean_s",
+                           "wall_sd_s", "wall_min_s", "speedup", "efficiency"}) {
+    EXPECT_GE(column(sh, name), 0) << name;
+  }
+  for (std::size_t i = 1; i < summary.size(); ++i) {
+    if (summary[i][column(sh, "threads")] == "1" && summary[i][column(sh, "algorithm")] != "nn") {
+      EXPECT_EQ(summary[i][column(sh, "speedup")], "1.0000");
+    }
+  }
+  for (const char* chart : {"speedup.svg", "convergence.svg", "gap_vs_time.svg"}) {
+    const std::string path = t / ("plots/" + std::string(chart));
+    ASSERT_TRUE(std::filesystem::exists(path)) << chart;
+    EXPECT_EQ(testutil::run("rsvg-convert " + shell_quote(path) + " -o " + shell_quote(t / "c.png")).code, 0) << chart;
+  }
+}
+
+TEST(bench_test, thesis_preset_prints_tables_4_1_to_4_15_beside_the_published_times) {
+  testutil::TempDir t;
+  auto r = testutil::run(acobench() + " --preset thesis --quick --out " + shell_quote(t / "thesis.csv"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  for (int table = 1; table <= 15; ++table) {
+    EXPECT_THAT(r.out, ::testing::HasSubstr("Table 4." + std::to_string(table) + ":")) << table;
+  }
+  EXPECT_THAT(r.out, ::testing::HasSubstr("| 1 | ")) << "one processor row";
+  EXPECT_THAT(r.out, ::testing::HasSubstr("| 39858 |")) << "the thesis's own time for experiment 5, set A, 1 processor";
+  EXPECT_THAT(r.out, ::testing::HasSubstr("acs vs best as"));
+}
+
+TEST(bench_test, bad_grid_values_are_usage_errors) {
+  testutil::TempDir t;
+  for (const std::string& args : {"--instances /nonexistent.tsp --out " + shell_quote(t / "r.csv"),
+                                 "--instances " + shell_quote(testutil::data("tsplib/d198.tsp")) + " --rho 2 --out " +
+                                     shell_quote(t / "r.csv"),
+                                 "--instances " + shell_quote(testutil::data("tsplib/d198.tsp")) +
+                                     " --algorithm zzz --out " + shell_quote(t / "r.csv"),
+                                 std::string("--out")}) {
+    auto r = testutil::run(acobench() + " " + args);
+    EXPECT_EQ(r.code, 2) << args << ": " << r.err;
+    EXPECT_EQ(testutil::count_lines(r.err), 1) << args << ": " << r.err;
+    EXPECT_FALSE(std::filesystem::exists(t / "r.csv"));
+  }
+}

@@ -1,0 +1,15 @@
+#include "app/errors.h"
+#include "app/excellon.h"
+#include "app/inputs.h"
+#include "fuzz_targets.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  const std::string_view input = ACO_FUZZ_INPUT(data, size);
+  app::InputOptions options;
+  options.dxf.max_holes = 100000;
+  try {
+    app::parse_tsplib("fuzz", input);
+  } catch (const app::UserError&) {
+  }
+  return 0;
+}
