@@ -347,15 +347,26 @@ int cmd_verify(const std::string& program_path, const std::string& holes_path, c
       faults.push_back("hole " + at + " D" + gcode::format_number(h.diameter, 3) + " is not drilled");
       continue;
     }
-    if (matches.size() > 1) faults.push_back("hole " + at + " is drilled " + std::to_string(matches.size()) + " times");
-    for (std::size_t m : matches) used[m] = 1;
-    const auto& d = run.holes[matches.front()];
-    auto known = run.tool_diameter_mm.find(d.tool);
-    if (known != run.tool_diameter_mm.end() && std::fabs(known->second - h.diameter) > 0.0015 && h.diameter > 0) {
-      faults.push_back("hole " + at + " D" + gcode::format_number(h.diameter, 3) + " is drilled with T" +
-                       std::to_string(d.tool) + " D" + gcode::format_number(known->second, 3) + " (line " +
-                       std::to_string(d.line) + ")");
+    // Concentric holes share a position: the one that drills this hole is the
+    // one whose tool has its diameter, where the program names its tools.
+    std::vector<std::size_t> same_tool;
+    for (std::size_t m : matches) {
+      auto known = run.tool_diameter_mm.find(run.holes[m].tool);
+      if (known == run.tool_diameter_mm.end() || h.diameter <= 0 || std::fabs(known->second - h.diameter) <= 0.0015) {
+        same_tool.push_back(m);
+      }
     }
+    if (same_tool.empty()) {
+      const auto& d = run.holes[matches.front()];
+      faults.push_back("hole " + at + " D" + gcode::format_number(h.diameter, 3) + " is drilled with T" +
+                       std::to_string(d.tool) + " D" + gcode::format_number(run.tool_diameter_mm.at(d.tool), 3) +
+                       " (line " + std::to_string(d.line) + ")");
+      for (std::size_t m : matches) used[m] = 1;
+      continue;
+    }
+    if (same_tool.size() > 1) faults.push_back("hole " + at + " is drilled " + std::to_string(same_tool.size()) + " times");
+    for (std::size_t m : same_tool) used[m] = 1;
+    const auto& d = run.holes[same_tool.front()];
     const long long key = std::llround(h.diameter * 1000.0);
     auto [it, inserted] = tool_of_diameter.emplace(key, d.tool);
     if (!inserted && it->second != d.tool) {

@@ -142,10 +142,12 @@ LoadedHoles parse_csv(const std::string& path, std::string_view data, const Inpu
       if (comma == std::string_view::npos) break;
       start = comma + 1;
     }
-    double x, y, d = 0.0;
-    const bool numeric = cells.size() >= 2 && parse_number(cells[0], x) && parse_number(cells[1], y);
-    if (!numeric) {
-      if (first_data && out.holes.empty()) {  // a header line
+    double x = 0, y = 0, d = 0.0;
+    const bool x_ok = parse_number(cells[0], x);
+    const bool y_ok = cells.size() >= 2 && parse_number(cells[1], y);
+    if (!x_ok || !y_ok) {
+      // A header is a first line whose first two cells are both words, not numbers.
+      if (first_data && out.holes.empty() && !x_ok && cells.size() >= 2 && !parse_number(cells[1], y)) {
         first_data = false;
         return true;
       }

@@ -10,6 +10,7 @@
 #include <functional>
 #include <numeric>
 
+#include "bucket_grid.h"
 #include "candidates.h"
 #include "local_search.h"
 #include "space.h"
@@ -17,105 +18,6 @@
 namespace aco {
 
 namespace detail {
-
-namespace {
-
-class BucketGrid {
- public:
-  explicit BucketGrid(const Space& s) : s_(s) {
-    const HoleIndex n = s.holes();
-    double minx = std::numeric_limits<double>::infinity(), miny = minx, maxx = -minx, maxy = -minx;
-    for (HoleIndex i = 0; i < n; ++i) {
-      minx = std::min(minx, s.point(i).x);
-      maxx = std::max(maxx, s.point(i).x);
-      miny = std::min(miny, s.point(i).y);
-      maxy = std::max(maxy, s.point(i).y);
-    }
-    x0_ = minx;
-    y0_ = miny;
-    const double w = std::max(maxx - minx, 1e-9), h = std::max(maxy - miny, 1e-9);
-    // About two holes a cell.
-    cell_ = std::max(std::sqrt(w * h / std::max<double>(n, 1) * 2.0), std::max(w, h) / 4096.0);
-    nx_ = static_cast<int>(std::min(4096.0, std::floor(w / cell_) + 1));
-    ny_ = static_cast<int>(std::min(4096.0, std::floor(h / cell_) + 1));
-    cells_.assign(static_cast<std::size_t>(nx_) * ny_, {});
-    slot_.assign(n, 0);
-    for (HoleIndex i = 0; i < n; ++i) insert(i);
-    alive_.resize(n);
-    std::iota(alive_.begin(), alive_.end(), 0);
-    alive_at_.resize(n);
-    std::iota(alive_at_.begin(), alive_at_.end(), 0);
-  }
-
-  void remove(HoleIndex i) {
-    auto& c = cells_[cell_of(s_.point(i))];
-    const HoleIndex at = slot_[i];
-    c[at] = c.back();
-    slot_[c[at]] = at;
-    c.pop_back();
-    const HoleIndex a = alive_at_[i];
-    alive_[a] = alive_.back();
-    alive_at_[alive_[a]] = a;
-    alive_.pop_back();
-  }
-
-  bool empty() const { return alive_.empty(); }
-
-  // Nearest remaining hole to p (ties to the lower index), in the space's metric.
-  HoleIndex nearest(Point2 from, const std::function<double(HoleIndex)>& dist) const {
-    const int cx = clampx(from.x), cy = clampy(from.y);
-    HoleIndex best = UINT32_MAX;
-    double best_d = std::numeric_limits<double>::infinity();
-    auto consider = [&](HoleIndex h) {
-      const double d = dist(h);
-      if (d < best_d || (d == best_d && h < best)) {
-        best_d = d;
-        best = h;
-      }
-    };
-    std::size_t scanned_cells = 0;
-    for (int r = 0;; ++r) {
-      // Scanning the ring costs ~8r cells; once that exceeds what is left, a plain scan is cheaper.
-      if (scanned_cells + 8 * static_cast<std::size_t>(r) + 1 > alive_.size() * 4 && r > 1) {
-        for (HoleIndex h : alive_) consider(h);
-        return best;
-      }
-      for (int y = cy - r; y <= cy + r; ++y) {
-        if (y < 0 || y >= ny_) continue;
-        const bool edge_row = (y == cy - r || y == cy + r);
-        for (int x = cx - r; x <= cx + r; x += (edge_row ? 1 : 2 * r)) {
-          if (x >= 0 && x < nx_) {
-            for (HoleIndex h : cells_[static_cast<std::size_t>(y) * nx_ + x]) consider(h);
-            ++scanned_cells;
-          }
-          if (!edge_row && r == 0) break;
-        }
-      }
-      // Every hole outside ring r is at least r cells away (in any of our metrics).
-      if (best != UINT32_MAX && best_d <= r * cell_) return best;
-      if (r > nx_ + ny_) return best;
-    }
-  }
-
- private:
-  int clampx(double x) const { return std::clamp(static_cast<int>((x - x0_) / cell_), 0, nx_ - 1); }
-  int clampy(double y) const { return std::clamp(static_cast<int>((y - y0_) / cell_), 0, ny_ - 1); }
-  std::size_t cell_of(Point2 p) const { return static_cast<std::size_t>(clampy(p.y)) * nx_ + clampx(p.x); }
-  void insert(HoleIndex i) {
-    auto& c = cells_[cell_of(s_.point(i))];
-    slot_[i] = static_cast<HoleIndex>(c.size());
-    c.push_back(i);
-  }
-
-  const Space& s_;
-  double x0_ = 0, y0_ = 0, cell_ = 1;
-  int nx_ = 1, ny_ = 1;
-  std::vector<std::vector<HoleIndex>> cells_;
-  std::vector<HoleIndex> slot_;
-  std::vector<HoleIndex> alive_, alive_at_;
-};
-
-}  // namespace
 
 Order nearest_neighbor_order(const Space& space, const Candidates&) {
   const HoleIndex n = space.holes();

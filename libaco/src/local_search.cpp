@@ -36,7 +36,7 @@ void LocalSearcher::reverse(std::size_t i, std::size_t j) {
   std::size_t inner = j - i;
   // A closed tour has no fixed position: reversing the complement gives the
   // same cycle, and is cheaper when the inner part is longer than half.
-  if (!space_.open() && inner * 2 > m_) {
+  if (!space_.open() && !windowed_ && inner * 2 > m_) {
     std::size_t outer = m_ - inner;
     l = succ(j);
     r = i;
@@ -85,6 +85,7 @@ bool LocalSearcher::try_two_opt(HoleIndex a) {
       const std::size_t edge_c = dir == 0 ? pc : pred(pc);
       const std::size_t i = std::min(edge_a, edge_c), j = std::max(edge_a, edge_c);
       if (j <= i + 1) continue;  // adjacent or identical edges: no 2-opt move
+      if (windowed_ && (!in_window(i) || !in_window(j + 1))) continue;
       if (two_opt_gain(i, j) > kEps) {
         apply_two_opt(i, j);
         return true;
@@ -120,6 +121,7 @@ bool LocalSearcher::try_or_opt(HoleIndex a) {
       std::size_t s = side == 0 ? pa : pa + 1 - len;
       if (side == 1 && pa + 1 < len) continue;
       if (s == 0 || s + len > m_) continue;  // position 0 never moves; no wrap-around segments
+      if (windowed_ && (!in_window(s - 1) || !in_window(s + len))) continue;
       if (len + 2 > m_) continue;
       const std::size_t last = s + len - 1;
       const HoleIndex f = route_[s], l = route_[last];
@@ -136,9 +138,11 @@ bool LocalSearcher::try_or_opt(HoleIndex a) {
           if (space_.d(anchor, c) >= remove_gain) break;
           const std::size_t pc = pos_[c];
           if (pc >= s && pc <= last) continue;
+          if (windowed_ && (!in_window(pc) || pc == 0 || pc + 1 >= hi_)) continue;
           // Two places next to c: between (c, succ c) and between (pred c, c).
           for (int place = 0; place < 2; ++place) {
             const std::size_t q = place == 0 ? pc : pred(pc);  // insert between q and q+1
+            if (windowed_ && (q < lo_ || q + 1 > hi_)) continue;
             if (q + 1 == s || q == last || (q >= s && q <= last)) continue;
             const HoleIndex u = route_[q], w = route_[succ(q)];
             if (u == prev && w == f) continue;
@@ -171,13 +175,37 @@ double LocalSearcher::improve(std::vector<HoleIndex>& route, bool or_opt) {
   pos_.assign(m_ + 1, 0);
   for (std::size_t i = 0; i < m_; ++i) pos_[route_[i]] = i;
   const double before = space_.route_cost(route_);
-  queue_.clear();
-  head_ = 0;
   std::fill(queued_.begin(), queued_.end(), 0);
-  for (HoleIndex node : route_) push(node);
+  windowed_ = m_ > kWindow;
+  if (!windowed_) {
+    lo_ = 0;
+    hi_ = m_;
+    queue_.clear();
+    head_ = 0;
+    for (HoleIndex node : route_) push(node);
+    run_queue(or_opt);
+  } else {
+    // Windows overlap by half, so a move across one window's border lies
+    // inside the next; each is searched until no move in it gains.
+    for (std::size_t lo = 0; lo + 2 < m_; lo += kWindow / 2) {
+      lo_ = lo;
+      hi_ = std::min(m_ - 1, lo + kWindow);
+      queue_.clear();
+      head_ = 0;
+      for (std::size_t p = lo_; p <= hi_; ++p) push(route_[p]);
+      run_queue(or_opt);
+      if (hi_ == m_ - 1) break;
+    }
+  }
+  route.assign(route_.begin(), route_.end());
+  return before - space_.route_cost(route_);
+}
+
+void LocalSearcher::run_queue(bool or_opt) {
   while (head_ < queue_.size()) {
     const HoleIndex a = queue_[head_++];
     queued_[a] = 0;
+    if (windowed_ && !in_window(pos_[a])) continue;
     bool moved = try_two_opt(a);
     if (!moved && or_opt) moved = try_or_opt(a);
     if (moved) push(a);
@@ -187,8 +215,6 @@ double LocalSearcher::improve(std::vector<HoleIndex>& route, bool or_opt) {
       head_ = 0;
     }
   }
-  route.assign(route_.begin(), route_.end());
-  return before - space_.route_cost(route_);
 }
 
 }  // namespace aco::detail

@@ -17,9 +17,16 @@ class LocalSearcher {
 
   // Improves `route` in place until no move gains; returns the gain.
   // `or_opt` adds segment moves of 1 to 3 holes to the 2-opt moves.
+  // Routes longer than kWindow are improved in overlapping windows of
+  // kWindow positions: an array 2-opt move reverses up to half the route, so
+  // on a million holes whole-route search is quadratic; windows keep every
+  // move's cost bounded and the pass linear.
   double improve(std::vector<HoleIndex>& route, bool or_opt);
+  static constexpr std::size_t kWindow = 100000;
 
  private:
+  void run_queue(bool or_opt);
+  bool in_window(std::size_t position) const { return position >= lo_ && position <= hi_; }
   bool try_two_opt(HoleIndex a);
   bool try_or_opt(HoleIndex a);
   void reverse(std::size_t i, std::size_t j);  // reverse positions i+1..j
@@ -39,6 +46,8 @@ class LocalSearcher {
   std::vector<char> queued_;
   std::size_t head_ = 0;
   std::size_t m_ = 0;
+  std::size_t lo_ = 0, hi_ = 0;  // positions a move may touch
+  bool windowed_ = false;
 };
 
 }  // namespace aco::detail
