@@ -41,5 +41,6 @@ build() {
   if [ ! -f "$BUILD/build.ninja" ]; then
     cmake -S "$ROOT" -B "$BUILD" -G Ninja -DCMAKE_BUILD_TYPE=Release "$@" >/dev/null
   fi
+  # Arguments after the first configure are ignored; the cache keeps them.
   cmake --build "$BUILD" -j "$jobs"
 }
