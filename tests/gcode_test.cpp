@@ -149,3 +149,13 @@ TEST(gcode_test, interpreter_errors_name_the_line) {
   EXPECT_THROW(gcode::interpret("G0 X\n"), gcode::ProgramError);
   EXPECT_THROW(gcode::interpret("G0 #1\n"), gcode::ProgramError);
 }
+
+TEST(gcode_test, clamps_switch_to_the_initial_plane_only_where_needed) {
+  auto p = pass(1, 3.0, {{0, 0}, {10, 0}, {20, 0}, {30, 0}});
+  p.clear_after = {false, true, false, false};  // the move 10 -> 20 crosses a clamp
+  const std::string prog = emit({p});
+  EXPECT_THAT(prog, ::testing::HasSubstr("N1 G99 G81 X0.000"));
+  EXPECT_THAT(prog, ::testing::HasSubstr("N2 G98 X10.000 Y0.000\nN3 G99 X20.000 Y0.000\nN4 G98 X30.000"));
+  // And the interpreter agrees on where each hole is.
+  EXPECT_EQ(gcode::interpret(prog).holes.size(), 4u);
+}

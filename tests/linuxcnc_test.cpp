@@ -51,6 +51,22 @@ std::vector<CanonHole> holes_from_canon(const std::string& canon) {
 
 bool have_rs274() { return std::system("command -v rs274 >/dev/null 2>&1") == 0; }
 
+// The documented HAAS -> LinuxCNC word mapping (../shared/gcode.md, section 2):
+// G82's P is integer milliseconds on a HAAS and seconds in LinuxCNC. Every
+// other word acodrill writes for HAAS reads the same in LinuxCNC.
+std::string haas_to_linuxcnc(const std::string& haas) {
+  static const std::regex g82_dwell(R"((G82[^\n]*) P(\d+))");
+  std::string out;
+  std::sregex_iterator it(haas.begin(), haas.end(), g82_dwell), end;
+  std::size_t last = 0;
+  for (; it != end; ++it) {
+    out += haas.substr(last, static_cast<std::size_t>(it->position()) - last);
+    out += (*it)[1].str() + " P" + std::to_string(std::stod((*it)[2].str()) / 1000.0);
+    last = static_cast<std::size_t>(it->position() + it->length());
+  }
+  return out + haas.substr(last);
+}
+
 void check_program(const std::string& program_path, const std::string& sample, bool inch, const std::string& what) {
   testutil::TempDir t;
   // A tool table naming every T/H number the program uses.
@@ -124,4 +140,34 @@ TEST(linuxcnc_test, peck_cycles_read_back_as_one_hole_each) {
   ASSERT_EQ(r.code, 0);
   ASSERT_THAT(testutil::slurp(t / "p.nc"), ::testing::HasSubstr("G83"));
   check_program(t / "p.nc", sample, false, "G83");
+}
+
+TEST(linuxcnc_test, every_cycle_and_clamp_retracts_read_back) {
+  ASSERT_TRUE(have_rs274());
+  testutil::TempDir t;
+  const std::string sample = testutil::source_dir() + "/samples/pcb_mixed.dxf";
+  const std::string tools = testutil::data("tools_all_cycles.json");
+  // A clamp across the middle of the board makes G98/G99 switch between holes.
+  testutil::spit(t / "machine.json", R"({"clamps": [{"x_min_mm": 32.5, "y_min_mm": -10, "x_max_mm": 33.5, "y_max_mm": 60}]})");
+  for (const char* dialect : {"linuxcnc", "haas"}) {
+    const std::string nc = t / (std::string(dialect) + ".nc");
+    auto r = testutil::acodrill_run("plan " + testutil::shell_quote(sample) + " -o " + testutil::shell_quote(nc) +
+                                    " -q --iterations 10 --tools " + testutil::shell_quote(tools) + " --machine " +
+                                    testutil::shell_quote(t / "machine.json") + " --dialect " + dialect);
+    ASSERT_EQ(r.code, 0) << r.err;
+    const std::string prog = testutil::slurp(nc);
+    for (const char* word : {"G73", "G82", "G83", "G81", "G98", "G99"}) {
+      EXPECT_THAT(prog, ::testing::HasSubstr(word)) << dialect;
+    }
+    if (std::string(dialect) == "haas") {
+      EXPECT_THAT(prog, ::testing::HasSubstr(" P250 ")) << "HAAS dwell in integer milliseconds";
+      testutil::spit(nc, haas_to_linuxcnc(prog));
+      EXPECT_THAT(testutil::slurp(nc), ::testing::HasSubstr(" P0.25"));
+    } else {
+      EXPECT_THAT(prog, ::testing::HasSubstr(" P0.250 ")) << "LinuxCNC dwell in seconds";
+    }
+    check_program(nc, sample, false, std::string("all cycles, ") + dialect);
+    auto v = testutil::acodrill_run("verify " + testutil::shell_quote(nc) + " --holes " + testutil::shell_quote(sample) + " -q");
+    EXPECT_EQ(v.code, 0) << v.out;
+  }
 }

@@ -219,7 +219,7 @@ int cmd_plan(const PlanArgs& a, const SolverArgs& s, const InputArgs& in_args) {
       "ORDER: ACODRILL " + std::string(aco::to_string(plan.solver.algorithm)) + " SEED " +
           std::to_string(plan.solver.seed)};
   std::ostringstream program;
-  const std::vector<gcode::ToolPass> passes = app::to_passes(loaded.holes, plan);
+  const std::vector<gcode::ToolPass> passes = app::to_passes(loaded.holes, plan, o.machine);
   try {
     gcode::write_program(program, passes, ps);
   } catch (const std::invalid_argument& e) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <nlohmann/json.hpp>
 
@@ -68,6 +69,18 @@ Machine load_machine(const std::string& path) {
   }
   if (m.tool_change_s < 0) throw UserError(path, 0, "tool_change_s must be >= 0");
   if (!(m.x_min < m.x_max) || !(m.y_min < m.y_max)) throw UserError(path, 0, "travel limits are empty (min >= max)");
+  if (j.contains("clamps")) {
+    if (!j["clamps"].is_array()) throw UserError(path, 0, "\"clamps\" is a list of {x_min_mm, y_min_mm, x_max_mm, y_max_mm}");
+    for (const json& c : j["clamps"]) {
+      if (!c.is_object()) throw UserError(path, 0, "each clamp is {x_min_mm, y_min_mm, x_max_mm, y_max_mm}");
+      Machine::Rect r{json_number(c, "x_min_mm", NAN, path), json_number(c, "y_min_mm", NAN, path),
+                      json_number(c, "x_max_mm", NAN, path), json_number(c, "y_max_mm", NAN, path)};
+      if (!(r.x_min < r.x_max) || !(r.y_min < r.y_max)) {
+        throw UserError(path, 0, "a clamp needs x_min_mm < x_max_mm and y_min_mm < y_max_mm");
+      }
+      m.clamps.push_back(r);
+    }
+  }
   return m;
 }
 
@@ -168,6 +181,29 @@ ToolTable generate_tool_table(const aco::HoleSet& holes, Material material, doub
   return t;
 }
 
+bool crosses_clamp(aco::Point2 a, aco::Point2 b, const Machine& machine) {
+  // Liang-Barsky: clip the segment against each rectangle.
+  for (const Machine::Rect& r : machine.clamps) {
+    double t0 = 0.0, t1 = 1.0;
+    const double dx = b.x - a.x, dy = b.y - a.y;
+    const double p[4] = {-dx, dx, -dy, dy};
+    const double q[4] = {a.x - r.x_min, r.x_max - a.x, a.y - r.y_min, r.y_max - a.y};
+    bool outside = false;
+    for (int k = 0; k < 4 && !outside; ++k) {
+      if (p[k] == 0.0) {
+        if (q[k] < 0.0) outside = true;
+      } else {
+        const double t = q[k] / p[k];
+        if (p[k] < 0.0) t0 = std::max(t0, t);
+        else t1 = std::min(t1, t);
+        if (t0 > t1) outside = true;
+      }
+    }
+    if (!outside) return true;
+  }
+  return false;
+}
+
 double rapid_time_s(double distance, double rate_mm_min, double accel) {
   if (distance <= 0.0) return 0.0;
   const double v = rate_mm_min / 60.0;
@@ -222,7 +258,8 @@ RouteStats route_stats(const aco::HoleSet& holes, const std::vector<ToolGroup>& 
       st.travel_mm += aco::euclidean(at, p);
       st.time_s += xy_move_time(at, p, m);
       const bool last = i + 1 == order.size();
-      st.time_s += cycle_time_s(groups[g].tool, s, m, !s.retract_to_r || last);
+      const bool clear = !last && crosses_clamp(p, holes[order[i + 1]].center, m);
+      st.time_s += cycle_time_s(groups[g].tool, s, m, !s.retract_to_r || last || clear);
       if (i == 0) st.time_s += rapid_time_s(s.initial_z_mm - s.r_plane_mm, m.rapid_z_mm_min, m.accel_mm_s2);
       at = p;
     }
@@ -241,6 +278,14 @@ PlanResult plan_job(const aco::HoleSet& holes, const PlanOptions& options, const
     if (h.center.x < m.x_min || h.center.x > m.x_max || h.center.y < m.y_min || h.center.y > m.y_max) {
       if (outside.size() < 5) outside.push_back("(" + fmt3(h.center.x) + ", " + fmt3(h.center.y) + ")");
       else if (outside.size() == 5) outside.push_back("...");
+    }
+  }
+  for (const aco::Hole& h : holes) {
+    for (const Machine::Rect& r : m.clamps) {
+      if (h.center.x >= r.x_min && h.center.x <= r.x_max && h.center.y >= r.y_min && h.center.y <= r.y_max) {
+        throw UserError(source, h.source_line, "hole at (" + fmt3(h.center.x) + ", " + fmt3(h.center.y) +
+                                                   ") lies under a clamp of the machine profile");
+      }
     }
   }
   if (!outside.empty()) {
@@ -330,7 +375,7 @@ PlanResult plan_job(const aco::HoleSet& holes, const PlanOptions& options, const
   return result;
 }
 
-std::vector<gcode::ToolPass> to_passes(const aco::HoleSet& holes, const PlanResult& plan) {
+std::vector<gcode::ToolPass> to_passes(const aco::HoleSet& holes, const PlanResult& plan, const Machine& machine) {
   std::vector<gcode::ToolPass> passes;
   std::size_t index = 0;
   for (const ToolGroup& g : plan.groups) {
@@ -339,6 +384,12 @@ std::vector<gcode::ToolPass> to_passes(const aco::HoleSet& holes, const PlanResu
     for (aco::HoleIndex h : g.optimized) {
       pass.holes.push_back(holes[h].center);
       pass.index.push_back(++index);
+    }
+    if (!machine.clamps.empty()) {
+      pass.clear_after.assign(pass.holes.size(), false);
+      for (std::size_t i = 0; i + 1 < pass.holes.size(); ++i) {
+        pass.clear_after[i] = crosses_clamp(pass.holes[i], pass.holes[i + 1], machine);
+      }
     }
     passes.push_back(std::move(pass));
   }

@@ -166,12 +166,17 @@ void write_program(std::ostream& out, const std::vector<ToolPass>& passes, const
     char hbuf[16];
     std::snprintf(hbuf, sizeof hbuf, "H%02d", t.number);
     w.line("G43 " + std::string(hbuf) + " Z" + w.c(s.initial_z_mm) + " M08");
+    bool mode_initial = false;
     for (std::size_t i = first; i < p.holes.size(); ++i) {
       const aco::Point2& h = p.holes[i];
       const bool last = i + 1 == p.holes.size();
+      // G99 (back to R) between holes saves time; G98 (back to the initial
+      // plane) for the last hole of a tool and before a move over a clamp.
+      const bool clear = i < p.clear_after.size() && p.clear_after[i];
+      const bool want_initial = !s.retract_to_r || last || clear;
       std::string retract;
-      if (i == first) retract = (s.retract_to_r && !last) ? "G99 " : "G98 ";
-      else if (last && s.retract_to_r) retract = "G98 ";  // the last hole leaves at the initial plane
+      if (i == first || want_initial != mode_initial) retract = want_initial ? "G98 " : "G99 ";
+      mode_initial = want_initial;
       std::string text = w.label(p.index[i]) + retract;
       if (i == first) {
         text += std::string(to_string(t.cycle)) + " X" + w.c(h.x) + " Y" + w.c(h.y) + " Z" + w.c(t.depth_mm) + " R" +

@@ -27,7 +27,16 @@ struct Machine {
   int max_rpm = 8100;                // spindle limit; generated tools stay under it
   aco::Point2 start{0.0, 0.0};       // where the spindle is at the start and returns to (work XY)
   double x_min = -762.0, x_max = 762.0, y_min = -406.0, y_max = 406.0;  // reachable work XY
+  // Clamps and fixtures sticking up above the R plane (work XY rectangles):
+  // a move across one retracts to the initial plane first; a hole in one is an error.
+  struct Rect {
+    double x_min, y_min, x_max, y_max;
+  };
+  std::vector<Rect> clamps;
 };
+
+// True when the straight move a → b passes over any clamp of the machine.
+bool crosses_clamp(aco::Point2 a, aco::Point2 b, const Machine& machine);
 
 Machine load_machine(const std::string& path);
 
@@ -89,8 +98,9 @@ struct PlanResult {
 // `source`) for a hole no tool fits or one outside the machine's travel.
 PlanResult plan_job(const aco::HoleSet& holes, const PlanOptions& options, const std::string& source);
 
-// The drilling passes of a plan, ready for gcode::write_program.
-std::vector<gcode::ToolPass> to_passes(const aco::HoleSet& holes, const PlanResult& plan);
+// The drilling passes of a plan, ready for gcode::write_program (with the
+// G98 retracts the machine's clamps need).
+std::vector<gcode::ToolPass> to_passes(const aco::HoleSet& holes, const PlanResult& plan, const Machine& machine);
 
 // XY travel and time of drilling the groups in the given orders.
 RouteStats route_stats(const aco::HoleSet& holes, const std::vector<ToolGroup>& groups,

@@ -40,6 +40,9 @@ struct ToolPass {
   Tool tool;
   std::vector<aco::Point2> holes;  // mm, work coordinates
   std::vector<std::size_t> index;
+  // clear_after[i]: the move from hole i to the next crosses a clamp, so hole i
+  // retracts to the initial plane (G98). Empty = no clamps.
+  std::vector<bool> clear_after;
 };
 
 struct ProgramSettings {
