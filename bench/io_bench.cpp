@@ -22,6 +22,35 @@ std::string make_dxf(std::size_t circles) {
   return s + "0\nENDSEC\n0\nEOF\n";
 }
 
+// As AutoCAD writes a circle in R2010: handle, owner, subclass markers, layer,
+// colour, linetype, lineweight, thickness, extrusion: about 250 bytes each.
+std::string make_realistic_dxf(std::size_t circles) {
+  std::string s = "  0\nSECTION\n  2\nHEADER\n  9\n$ACADVER\n  1\nAC1024\n  9\n$INSUNITS\n 70\n     4\n  0\nENDSEC\n"
+                  "  0\nSECTION\n  2\nENTITIES\n";
+  s.reserve(circles * 260 + 200);
+  char buf[512];
+  for (std::size_t i = 0; i < circles; ++i) {
+    std::snprintf(buf, sizeof buf,
+                  "  0\nCIRCLE\n  5\n%zX\n330\n1F\n100\nAcDbEntity\n  8\nDRILL_%zu\n  6\nByLayer\n 62\n   256\n370\n    -1\n"
+                  " 48\n1.0\n 60\n     0\n347\n2A7\n"
+                  "100\nAcDbCircle\n 39\n0.0\n 10\n%.14f\n 20\n%.14f\n 30\n0.0\n 40\n%.14f\n210\n0.0\n220\n0.0\n230\n1.0\n",
+                  i + 0x100, i % 4, static_cast<double>(i % 500) * 2.54 + 0.0123456789,
+                  static_cast<double>(i / 500) * 2.54 + 0.0987654321, 0.4 + (i % 4) * 0.1);
+    s += buf;
+  }
+  return s + "  0\nENDSEC\n  0\nEOF\n";
+}
+
+// The yardstick: a 50 MB file with 200 000 circles.
+void BM_dxf_read_50MB_200k_circles(benchmark::State& state) {
+  const std::string text = make_realistic_dxf(200000);
+  std::size_t holes = 0;
+  for (auto _ : state) holes = dxf::read_holes(text).holes.size();
+  state.counters["MB"] = static_cast<double>(text.size()) / 1e6;
+  state.counters["holes"] = static_cast<double>(holes);
+  state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations() * text.size()));
+}
+
 void BM_dxf_read(benchmark::State& state) {
   const std::string text = make_dxf(static_cast<std::size_t>(state.range(0)));
   for (auto _ : state) benchmark::DoNotOptimize(dxf::read_holes(text));
@@ -78,6 +107,7 @@ void BM_gcode_write_reference_iostream(benchmark::State& state) {
 }  // namespace
 
 BENCHMARK(BM_dxf_read)->RangeMultiplier(4)->Range(64, 16384);
+BENCHMARK(BM_dxf_read_50MB_200k_circles)->Unit(benchmark::kMillisecond)->MinTime(2.0);
 BENCHMARK(BM_dxf_read_reference_getline_stod)->RangeMultiplier(4)->Range(64, 16384);
 BENCHMARK(BM_gcode_write)->RangeMultiplier(4)->Range(64, 16384);
 BENCHMARK(BM_gcode_write_reference_iostream)->RangeMultiplier(4)->Range(64, 16384);

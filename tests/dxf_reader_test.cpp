@@ -96,6 +96,8 @@ std::string fixture_name(const ::testing::TestParamInfo<std::string>& param) {
 }
 INSTANTIATE_TEST_SUITE_P(ezdxf_written, FixtureTest, ::testing::ValuesIn(fixtures("dxf")), fixture_name);
 INSTANTIATE_TEST_SUITE_P(real_exports, FixtureTest, ::testing::ValuesIn(fixtures("real-dxf")), fixture_name);
+// One ezdxf-written file per reader feature, the holes computed by ezdxf (tests/data/make_dxf_cases.py).
+INSTANTIATE_TEST_SUITE_P(ezdxf_feature_cases, FixtureTest, ::testing::ValuesIn(fixtures("dxf-cases")), fixture_name);
 
 TEST(dxf_reader_test, samples_give_their_hole_lists) {
   for (const auto& e : std::filesystem::directory_iterator(testutil::source_dir() + "/samples")) {
