@@ -32,7 +32,7 @@ std::string make_realistic_dxf(std::size_t circles) {
   for (std::size_t i = 0; i < circles; ++i) {
     std::snprintf(buf, sizeof buf,
                   "  0\nCIRCLE\n  5\n%zX\n330\n1F\n100\nAcDbEntity\n  8\nDRILL_%zu\n  6\nByLayer\n 62\n   256\n370\n    -1\n"
-                  " 48\n1.0\n 60\n     0\n347\n2A7\n"
+                  " 48\n1.0\n 60\n     0\n347\n2A7\n 67\n     0\n440\n33554687\n"
                   "100\nAcDbCircle\n 39\n0.0\n 10\n%.14f\n 20\n%.14f\n 30\n0.0\n 40\n%.14f\n210\n0.0\n220\n0.0\n230\n1.0\n",
                   i + 0x100, i % 4, static_cast<double>(i % 500) * 2.54 + 0.0123456789,
                   static_cast<double>(i / 500) * 2.54 + 0.0987654321, 0.4 + (i % 4) * 0.1);
