@@ -80,6 +80,7 @@ struct InputArgs {
   std::optional<double> min_d, max_d;
   std::string input_units;
   std::size_t max_holes = 5'000'000;
+  std::size_t max_expansion = 10'000'000;
 };
 
 void add_input_options(CLI::App* cmd, InputArgs& a) {
@@ -89,6 +90,9 @@ void add_input_options(CLI::App* cmd, InputArgs& a) {
   cmd->add_option("--input-units", a.input_units, "mm | inch: units of inputs that do not say (default mm)");
   cmd->add_option("--max-holes", a.max_holes, "Refuse inputs with more holes than this (default 5000000)")
       ->check(CLI::Range(std::size_t{1}, std::size_t{100'000'000}));
+  cmd->add_option("--max-expansion", a.max_expansion,
+                  "Refuse DXF files whose blocks expand to more references than this (default 10000000)")
+      ->check(CLI::Range(std::size_t{1}, std::size_t{1'000'000'000}));
 }
 
 app::InputOptions to_input_options(const InputArgs& a) {
@@ -97,6 +101,7 @@ app::InputOptions to_input_options(const InputArgs& a) {
   if (a.min_d) o.dxf.min_diameter_mm = *a.min_d;
   if (a.max_d) o.dxf.max_diameter_mm = *a.max_d;
   o.dxf.max_holes = a.max_holes;
+  o.dxf.max_block_references = a.max_expansion;
   if (!a.input_units.empty()) {
     if (a.input_units == "mm") o.default_unit_mm = 1.0;
     else if (a.input_units == "inch" || a.input_units == "in") o.default_unit_mm = 25.4;

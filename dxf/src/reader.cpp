@@ -497,6 +497,15 @@ void Parser::expand_insert(const Insert& ins, const Affine& parent, int depth) {
                                   " deep at block \"" + blocks_[index].name + "\"");
   }
   const Block& block = blocks_[index];
+  if (block.order.empty()) {
+    // Nothing to place: count the references without composing a transform each.
+    references_ += static_cast<std::size_t>(ins.rows) * static_cast<std::size_t>(ins.columns);
+    if (references_ > options_.max_block_references) {
+      throw ReadError(ins.line, "more than " + std::to_string(options_.max_block_references) +
+                                    " block references expanded (the expansion limit)");
+    }
+    return;
+  }
   const Affine to_parent_ocs = ocs_to_wcs(make_ocs(ins.extrusion, ins.line));
   stack_.push_back(index);
   for (int r = 0; r < ins.rows; ++r) {

@@ -54,7 +54,7 @@ struct ReadOptions {
   // Caps that keep a hostile file from eating the machine: holes produced, and
   // block references followed (an INSERT array of empty blocks makes no holes but costs time).
   std::size_t max_holes = 5'000'000;
-  std::size_t max_block_references = 20'000'000;
+  std::size_t max_block_references = 10'000'000;
   int max_block_depth = 200;
 };
 

@@ -1,0 +1,123 @@
+#!/usr/bin/env python3
+"""Turns the CSVs that scripts/benchmarks measured into docs/benchmarks.md.
+Every number in the page comes from those files; none is typed here."""
+import csv
+import os
+import statistics
+import sys
+
+
+def rows(path):
+    with open(path) as f:
+        return list(csv.DictReader(f))
+
+
+def main():
+    d = sys.argv[1]
+    out = []
+    w = out.append
+    machine = dict(line.strip().split("=", 1) for line in open(os.path.join(d, "machine.txt")) if "=" in line)
+    w("# Benchmarks\n")
+    w("Measured by the harness and written by `scripts/benchmarks`; regenerate with that one command "
+      "(about 12 minutes on 2 cores). Raw data: `docs/bench/`.\n")
+    w(f"Machine: {machine.get('cpu')}, {machine.get('cores')} cores, {machine.get('memory')}, {machine.get('os')}, "
+      f"{machine.get('compiler')}; commit {machine.get('commit')}.\n")
+
+    # Issue-4 targets.
+    path = os.path.join(d, "tsp-targets.csv")
+    if os.path.exists(path):
+        targets = {"d198": 0.2, "pcb442": 0.5, "pcb1173": 1.0, "d1655": 1.5, "pcb3038": 2.0, "d15112": 5.0}
+        w("## Gap to the optimum within a time budget\n")
+        w("`acodrill tsp INSTANCE --time-limit BUDGET --threads 2 --seed K`, default settings (ACS with 2-opt and "
+          "Or-opt), whole-process wall time, median over seeds; gap with TSPLIB's rounded distances.\n")
+        w("| instance | budget s | target gap | median gap | min | max | median wall s | peak RSS MB | seeds |")
+        w("|---|---:|---:|---:|---:|---:|---:|---:|---:|")
+        by = {}
+        for r in rows(path):
+            by.setdefault((r["instance"], r["budget_s"]), []).append(r)
+        for (inst, budget), rs in by.items():
+            gaps = [float(r["gap_pct"]) for r in rs]
+            walls = [float(r["wall_s"]) for r in rs]
+            rss = max(int(r["peak_rss_mb"]) for r in rs)
+            med = statistics.median(gaps)
+            target = targets.get(inst)
+            verdict = "" if target is None else (" ✓" if med <= target else " ✗")
+            w(f"| {inst} | {budget} | {target if target is not None else ''} % | {med:.2f} %{verdict} | {min(gaps):.2f} % | "
+              f"{max(gaps):.2f} % | {statistics.median(walls):.2f} | {rss} | {len(rs)} |")
+        w("")
+
+    # Gap against time per algorithm, and baselines.
+    path = os.path.join(d, "gap-summary.csv")
+    if os.path.exists(path):
+        w("## Algorithms against the time budget (TSPLIB)\n")
+        w("`acobench --algorithm acs,mmas,as --time-limit 0.25,1,4 --threads 2 --seeds 3`: median gap. "
+          "`as` is the thesis's Ant System, here with local search.\n")
+        summary = rows(path)
+        budgets = sorted({float(r["time_limit_s"]) for r in summary})
+        w("| instance | algorithm | " + " | ".join(f"{b:g} s" for b in budgets) + " |")
+        w("|---|---|" + "---:|" * len(budgets))
+        cells = {}
+        for r in summary:
+            cells[(r["instance"], r["algorithm"], float(r["time_limit_s"]))] = r["gap_median_pct"]
+        for inst in sorted({r["instance"] for r in summary}):
+            for alg in ["acs", "mmas", "as"]:
+                if (inst, alg, budgets[0]) in cells:
+                    w(f"| {inst} | {alg} | " + " | ".join(f"{float(cells.get((inst, alg, b), 'nan')):.2f} %" for b in budgets) + " |")
+        w("")
+        w("![gap against time](bench/plots-gap/gap_vs_time.svg)\n")
+    path = os.path.join(d, "baseline-summary.csv")
+    if os.path.exists(path):
+        w("### Baselines\n")
+        w("| instance | order | gap | wall s |")
+        w("|---|---|---:|---:|")
+        names = {"input": "input order", "raster": "boustrophedon raster (CAM default)", "nn": "nearest neighbour",
+                 "greedy": "greedy edge", "nn2opt": "nearest neighbour + 2-opt (pcb2gcode)"}
+        for r in rows(path):
+            w(f"| {r['instance']} | {names.get(r['algorithm'], r['algorithm'])} | {float(r['gap_median_pct']):.2f} % | "
+              f"{float(r['wall_median_s']):.4f} |")
+        w("")
+
+    # Speedup.
+    path = os.path.join(d, "speedup-summary.csv")
+    if os.path.exists(path):
+        w("## Threads\n")
+        w("`acobench --instances pcb442.tsp --algorithm acs,mmas,as --iterations 100 --threads 1,2`: the same "
+          "iterations on 1 and 2 threads; median wall time; identical tours (same seed).\n")
+        w("| algorithm | threads | median wall s | speedup | efficiency |")
+        w("|---|---:|---:|---:|---:|")
+        for r in rows(path):
+            w(f"| {r['algorithm']} | {r['threads']} | {float(r['wall_median_s']):.3f} | {r['speedup']} | {r['efficiency']} |")
+        w("")
+        w("![speedup](bench/plots-speedup/speedup.svg)\n")
+
+    # The thesis.
+    path = os.path.join(d, "thesis-tables.md")
+    if os.path.exists(path):
+        w("## The thesis's experiments 1-5 (tables 4.1-4.15)\n")
+        w("`acobench --preset thesis`: the Ant System exactly as published (tau0 = m / C_nn, eta = 1/d, rho 0.5, "
+          "every ant deposits 1/C_k, ants start at random holes, no local search), on the sample plates, 30 "
+          "repetitions, median times. The thesis's own times (C#, Intel Core i7 930, 1-6 processors) beside ours.\n")
+        w(open(path).read())
+        w("![thesis speedup](bench/plots-thesis/speedup.svg)\n")
+
+    # Microbenchmarks.
+    for name, title in [("solver_bench.csv", "Solver microbenchmarks"), ("io_bench.csv", "Input and output microbenchmarks")]:
+        path = os.path.join(d, name)
+        if not os.path.exists(path):
+            continue
+        lines = open(path).read().splitlines()
+        start = next((i for i, l in enumerate(lines) if l.startswith("name,")), None)
+        if start is None:
+            continue
+        w(f"## {title}\n")
+        w("Google Benchmark, optimised routine beside its reference in the same binary; real time per call.\n")
+        w("| benchmark | time | unit |")
+        w("|---|---:|---|")
+        for r in csv.DictReader(lines[start:]):
+            w(f"| {r['name']} | {float(r['real_time']):.3g} | {r['time_unit']} |")
+        w("")
+    print("\n".join(out))
+
+
+if __name__ == "__main__":
+    main()
