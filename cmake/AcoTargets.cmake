@@ -30,9 +30,11 @@ function(aco_add_executable name)
   aco_target_defaults(${name})
 endfunction()
 
-# aco_add_test(NAME [DEPS ...]): tests/NAME.cpp linked with gtest_main and DEPS.
+# aco_add_test(NAME [DEPS ...] [LOCK resource]): tests/NAME.cpp linked with
+# gtest_main and DEPS; LOCK keeps its tests from running in parallel with any
+# other test holding the same lock.
 function(aco_add_test name)
-  cmake_parse_arguments(ARG "" "" "DEPS" ${ARGN})
+  cmake_parse_arguments(ARG "" "LOCK" "DEPS" ${ARGN})
   add_executable(${name} ${name}.cpp)
   target_link_libraries(${name} PRIVATE GTest::gtest GTest::gtest_main GTest::gmock ${ARG_DEPS})
   aco_target_defaults(${name})
@@ -40,7 +42,12 @@ function(aco_add_test name)
   target_compile_definitions(${name} PRIVATE ACO_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
                              ACODRILL_BIN="$<TARGET_FILE:acodrill>" ACO_BUILD_DIR="${PROJECT_BINARY_DIR}")
   add_dependencies(${name} acodrill acobench)
-  gtest_discover_tests(${name} WORKING_DIRECTORY ${PROJECT_SOURCE_DIR} DISCOVERY_TIMEOUT 60)
+  if(ARG_LOCK)
+    gtest_discover_tests(${name} WORKING_DIRECTORY ${PROJECT_SOURCE_DIR} DISCOVERY_TIMEOUT 60
+                         PROPERTIES RESOURCE_LOCK ${ARG_LOCK})
+  else()
+    gtest_discover_tests(${name} WORKING_DIRECTORY ${PROJECT_SOURCE_DIR} DISCOVERY_TIMEOUT 60)
+  endif()
 endfunction()
 
 # aco_add_bench(NAME [DEPS ...]): bench/NAME.cpp linked with benchmark_main.
