@@ -11,7 +11,8 @@
 
 namespace aco::detail {
 
-class LocalSearcher {
+// Aligned to a cache line: one searcher per ant, and ants run on different threads.
+class alignas(64) LocalSearcher {
  public:
   LocalSearcher(const Space& space, const Candidates& candidates);
 
