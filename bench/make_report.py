@@ -2,6 +2,7 @@
 """Turns the CSVs that scripts/benchmarks measured into docs/benchmarks.md.
 Every number in the page comes from those files; none is typed here."""
 import csv
+import json
 import os
 import statistics
 import sys
@@ -81,8 +82,8 @@ def main():
     path = os.path.join(d, "speedup-summary.csv")
     if os.path.exists(path):
         w("## Threads\n")
-        w("`acobench --instances pcb442.tsp --algorithm acs,mmas,as --iterations 100 --threads 1,2`: the same "
-          "iterations on 1 and 2 threads; median wall time; identical tours (same seed).\n")
+        w("`acobench --instances pcb1173.tsp --algorithm acs,mmas --iterations 300 --threads 1,2 --seeds 5`: the same "
+          "iterations on 1 and 2 threads, median wall time of the solver; the tours are identical (same seed).\n")
         w("| algorithm | threads | median wall s | speedup | efficiency |")
         w("|---|---:|---:|---:|---:|")
         for r in rows(path):
@@ -101,20 +102,25 @@ def main():
         w("![thesis speedup](bench/plots-thesis/speedup.svg)\n")
 
     # Microbenchmarks.
-    for name, title in [("solver_bench.csv", "Solver microbenchmarks"), ("io_bench.csv", "Input and output microbenchmarks")]:
+    for name, title in [("solver_bench.json", "Solver microbenchmarks"), ("io_bench.json", "Input and output microbenchmarks")]:
         path = os.path.join(d, name)
         if not os.path.exists(path):
             continue
-        lines = open(path).read().splitlines()
-        start = next((i for i, l in enumerate(lines) if l.startswith("name,")), None)
-        if start is None:
-            continue
+        data = json.load(open(path))
         w(f"## {title}\n")
-        w("Google Benchmark, optimised routine beside its reference in the same binary; real time per call.\n")
-        w("| benchmark | time | unit |")
-        w("|---|---:|---|")
-        for r in csv.DictReader(lines[start:]):
-            w(f"| {r['name']} | {float(r['real_time']):.3g} | {r['time_unit']} |")
+        w("Google Benchmark, each optimised routine beside its reference in the same binary; real time per call.\n")
+        w("| benchmark | time | unit | throughput |")
+        w("|---|---:|---|---:|")
+        for b in data.get("benchmarks", []):
+            if "real_time" not in b:  # complexity fits (BigO, RMS)
+                if "big_o" in b:
+                    w(f"| {b['name']} | fitted {b['big_o']} | | |")
+                continue
+            mbps = b.get("bytes_per_second")
+            extra = f"{mbps / 1e6:.0f} MB/s" if mbps else ""
+            if "MB" in b:
+                extra += f" ({b['MB']:.1f} MB, {int(b.get('holes', 0))} holes)"
+            w(f"| {b['name']} | {b['real_time']:.3g} | {b['time_unit']} | {extra} |")
         w("")
     print("\n".join(out))
 

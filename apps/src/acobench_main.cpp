@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <set>
 
 #include "aco/error.h"
 #include "app/bench.h"
@@ -156,6 +157,10 @@ int main(int argc, char** argv) {
       }
     }
     for (const Job& j : jobs) {
+      static const std::set<std::string> known = {"as", "mmas", "acs", "input", "nn", "greedy", "raster", "nn2opt"};
+      if (!known.count(j.cell.algorithm)) {
+        throw app::UserError("--algorithm: \"" + j.cell.algorithm + "\" is none of as, mmas, acs, input, nn, greedy, raster, nn2opt");
+      }
       if (j.cell.alpha < 0 || (j.cell.rho != -1.0 && !(j.cell.rho > 0 && j.cell.rho <= 1)) || j.cell.threads < 1 ||
           j.cell.time_limit_s < 0 || j.cell.ants < 0 || j.cell.iterations < 0) {
         throw app::UserError("a grid value is out of range (alpha >= 0, 0 < rho <= 1, threads >= 1, ants/iterations >= 1)");

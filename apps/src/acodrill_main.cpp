@@ -13,6 +13,7 @@
 
 #include "aco/error.h"
 #include "aco/solve.h"
+#include "app/bench.h"
 #include "app/errors.h"
 #include "app/excellon.h"
 #include "app/files.h"
@@ -55,14 +56,8 @@ void add_solver_options(CLI::App* cmd, SolverArgs& a) {
 }
 
 aco::Params to_params(const SolverArgs& a) {
-  aco::Params p;
-  auto alg = aco::algorithm_from_string(a.algorithm);
-  if (!alg) throw app::UserError("--algorithm must be one of as, mmas, acs (got \"" + a.algorithm + "\")");
-  auto ls = aco::local_search_from_string(a.local_search);
-  if (!ls) throw app::UserError("--local-search must be one of none, 2opt, 2opt+oropt (got \"" + a.local_search + "\")");
+  aco::Params p = app::solver_params(a.algorithm, a.local_search);
   if (a.rho && !(*a.rho > 0.0 && *a.rho <= 1.0)) throw app::UserError("--rho must be in (0, 1]");
-  p.algorithm = *alg;
-  p.local_search = *ls;
   p.threads = a.threads;
   p.seed = a.seed;
   p.time_limit_s = a.time_limit;

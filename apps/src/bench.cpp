@@ -58,6 +58,17 @@ std::string key(const BenchRun& r) { return key_without_threads(r) + "|" + std::
 
 }  // namespace
 
+aco::Params solver_params(const std::string& algorithm, const std::string& local_search) {
+  aco::Params p;
+  auto alg = aco::algorithm_from_string(algorithm);
+  if (!alg) throw UserError("--algorithm must be one of as, mmas, acs (got \"" + algorithm + "\")");
+  auto ls = aco::local_search_from_string(local_search);
+  if (!ls) throw UserError("--local-search must be one of none, 2opt, 2opt+oropt (got \"" + local_search + "\")");
+  p.algorithm = *alg;
+  p.local_search = *ls;
+  return p;
+}
+
 std::map<std::string, double> known_optima() {
   // TSPLIB proven optima (Reinelt's TSPLIB95 "Optimal solutions for symmetric TSPs").
   return {{"d198", 15780},     {"pcb442", 50778},  {"d493", 35002},  {"u574", 36905},   {"d657", 48912},
@@ -108,13 +119,7 @@ BenchRun run_cell(const BenchInstance& inst, const BenchCell& cell, std::uint64_
     run.trace.push_back({0, run.wall_s, run.length});
     return run;
   }
-  aco::Params params;
-  auto alg = aco::algorithm_from_string(cell.algorithm);
-  if (!alg) throw UserError("--algorithm: unknown \"" + cell.algorithm + "\" (as, mmas, acs, input, nn, greedy, raster, nn2opt)");
-  auto ls = aco::local_search_from_string(cell.local_search);
-  if (!ls) throw UserError("--local-search: unknown \"" + cell.local_search + "\"");
-  params.algorithm = *alg;
-  params.local_search = *ls;
+  aco::Params params = solver_params(cell.algorithm, cell.local_search);
   params.alpha = cell.alpha;
   params.beta = cell.beta;
   params.rho = cell.rho;

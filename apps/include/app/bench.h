@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "aco/params.h"
 #include "aco/solution.h"
 
 namespace app {
@@ -47,6 +48,10 @@ struct BenchInstance {
   bool tsplib = false;
   std::optional<double> optimum;
 };
+
+// Params for an algorithm and a local search named on a command line; throws
+// UserError naming the option and its choices. Numbers are the caller's to set.
+aco::Params solver_params(const std::string& algorithm, const std::string& local_search);
 
 // Known optima: TSPLIB's proven optimal lengths by instance name.
 std::map<std::string, double> known_optima();
