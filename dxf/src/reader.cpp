@@ -147,7 +147,7 @@ struct Fields {
 class Parser {
  public:
   Parser(std::string_view text, const ReadOptions& options, ReadResult& result)
-      : tags_(text, result.diagnostics), options_(options), result_(result) {}
+      : tags_(text), options_(options), result_(result) {}
 
   void run();
 
@@ -267,7 +267,6 @@ Insert to_insert(const Fields& f) {
   ins.column_spacing = f.column_spacing;
   ins.row_spacing = f.row_spacing;
   ins.extrusion = f.extrusion;
-  ins.layer = f.layer;
   ins.line = f.line;
   return ins;
 }
@@ -662,8 +661,7 @@ bool wildcard_match(std::string_view pattern, std::string_view text) {
 bool looks_like_dxf(std::string_view head) {
   if (head.substr(0, kBinarySentinel.size()) == kBinarySentinel) return true;
   // First tag "0 / SECTION", after optional 999 comments and padding.
-  std::vector<Diagnostic> ignored;
-  TagReader tags(head, ignored);
+  TagReader tags(head);
   Tag t;
   try {
     for (int i = 0; i < 50 && tags.next(t); ++i) {

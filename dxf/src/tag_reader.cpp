@@ -31,8 +31,7 @@ static std::string printable(std::string_view s) {
   return out;
 }
 
-TagReader::TagReader(std::string_view text, std::vector<Diagnostic>& diagnostics)
-    : text_(text), diagnostics_(diagnostics) {
+TagReader::TagReader(std::string_view text) : text_(text) {
   // A UTF-8 byte-order mark is harmless; skip it.
   if (text_.size() >= 3 && std::memcmp(text_.data(), "\xEF\xBB\xBF", 3) == 0) pos_ = 3;
 }

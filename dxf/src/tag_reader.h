@@ -17,7 +17,7 @@ struct Tag {
 
 class TagReader {
  public:
-  TagReader(std::string_view text, std::vector<Diagnostic>& diagnostics);
+  explicit TagReader(std::string_view text);
   // Next tag, skipping 999 comments. Returns false at the end of the text.
   // Throws ReadError for a non-integer group code or a code with no value line.
   bool next(Tag& tag);
@@ -28,7 +28,6 @@ class TagReader {
   std::string_view text_;
   std::size_t pos_ = 0;
   std::uint32_t line_ = 0;
-  std::vector<Diagnostic>& diagnostics_;
 };
 
 std::string_view trim(std::string_view s);
