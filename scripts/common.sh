@@ -35,12 +35,14 @@ install_packages() {
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq $recommends $missing >/dev/null
 }
 
+# build [cmake configure arguments]: configure once (later arguments are
+# ignored; the cache keeps them), then build; BUILD_TARGETS limits what is built.
 build() {
   local jobs
   jobs=$(nproc 2>/dev/null || echo 2)
   if [ ! -f "$BUILD/build.ninja" ]; then
     cmake -S "$ROOT" -B "$BUILD" -G Ninja -DCMAKE_BUILD_TYPE=Release "$@" >/dev/null
   fi
-  # Arguments after the first configure are ignored; the cache keeps them.
-  cmake --build "$BUILD" -j "$jobs"
+  # shellcheck disable=SC2086
+  cmake --build "$BUILD" -j "$jobs" ${BUILD_TARGETS:+--target $BUILD_TARGETS}
 }
