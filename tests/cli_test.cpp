@@ -81,6 +81,7 @@ TEST(cli_test, holes_prints_the_contract_csv) {
   EXPECT_EQ(testutil::count_lines(r.err), 1) << "one summary line: " << r.err;
   auto stdin_run = acodrill_run("holes - --format csv -q", slurp(data("dxf/r12_plate25.dxf")));
   EXPECT_EQ(stdin_run.out, slurp(data("dxf/r12_plate25.holes.csv")));
+  EXPECT_EQ(acodrill_run("holes - -q", slurp(data("dxf/r12_plate25.dxf"))).out, stdin_run.out) << "csv is the default";
 }
 
 TEST(cli_test, other_input_formats) {

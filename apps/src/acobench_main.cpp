@@ -59,7 +59,7 @@ int main(int argc, char** argv) {
   cli.add_option("--time-limit", time_limits, "Time limits per run in seconds (0 = none)")->delimiter(',');
   cli.add_option("--local-search", local_search, "none, 2opt, 2opt+oropt")->delimiter(',');
   cli.add_option("--seeds", seeds, "Runs per cell, seeds 1..N (default 1)")->check(CLI::Range(1, 100000));
-  cli.add_option("--out", out, "runs.csv: one row per run")->required();
+  cli.add_option("--out", out, "runs.csv: one row per run (required for a grid; optional with --preset)");
   cli.add_option("--summary", summary, "summary.csv: one row per cell");
   cli.add_option("--plots", plots, "Directory for SVG charts (speedup, convergence, gap against time)");
   cli.add_option("--preset", preset, "thesis: experiments 1-5 of the thesis on the sample plates");
@@ -129,6 +129,7 @@ int main(int argc, char** argv) {
       }
     } else {
       if (instances.empty()) throw app::UserError("--instances is required (or --preset thesis)");
+      if (out.empty()) throw app::UserError("--out is required: the CSV file for one row per run");
       for (const std::string& path : instances) {
         loaded.push_back(app::load_instance(path));
         for (const std::string& alg : algorithms)
@@ -190,7 +191,7 @@ int main(int argc, char** argv) {
     if (tty) std::fprintf(stderr, "\n");
     if (budget_hit) std::fprintf(stderr, "acobench: time budget reached after %zu of %zu runs\n", done, jobs.size());
     app::fill_time_to_target(runs);
-    app::write_file_atomic(out, app::runs_csv(runs));
+    if (!out.empty()) app::write_file_atomic(out, app::runs_csv(runs));
     if (!summary.empty()) app::write_file_atomic(summary, app::summary_csv(runs));
     if (!plots.empty()) {
       for (const std::string& f : app::write_plots(runs, plots)) std::fprintf(stderr, "acobench: chart %s\n", f.c_str());

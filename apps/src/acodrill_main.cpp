@@ -446,7 +446,7 @@ int main(int argc, char** argv) {
   auto* holes_cmd = cli.add_subcommand("holes", "Print the holes an input holds (mm, world coordinates)");
   holes_cmd->footer("Example:\n  acodrill holes plate.dxf --format csv --layer 'DRILL*' > holes.csv");
   holes_cmd->add_option("input", holes_input, "Input file or - for stdin")->required();
-  holes_cmd->add_option("--format", holes_format, "Output format: csv")->required();
+  holes_cmd->add_option("--format", holes_format, "Output format: csv (the default)");
   holes_cmd->add_flag("-q,--quiet", quiet, "No summary on stderr");
   InputArgs holes_in;
   add_input_options(holes_cmd, holes_in);
