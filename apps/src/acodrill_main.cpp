@@ -43,7 +43,7 @@ struct SolverArgs {
 void add_solver_options(CLI::App* cmd, SolverArgs& a) {
   cmd->add_option("--threads", a.threads, "Worker threads (default: all cores)")->check(CLI::Range(1, 1024));
   cmd->add_option("--seed", a.seed, "Random seed; same input, options and seed give the same output (default 1)");
-  cmd->add_option("--time-limit", a.time_limit, "Stop after S seconds per tool (0 = no limit)")->check(CLI::Range(0.0, 1e7));
+  cmd->add_option("--time-limit", a.time_limit, "Stop after S seconds (0 = no limit); plan shares S among its tools by hole count")->check(CLI::Range(0.0, 1e7));
   cmd->add_option("--iterations", a.iterations, "Colony iterations (default: 300, or until the time limit)")
       ->check(CLI::Range(1, 100000000));
   cmd->add_option("--algorithm", a.algorithm, "acs (Ant Colony System, default), mmas (MAX-MIN), as (the thesis's Ant System)");

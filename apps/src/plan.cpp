@@ -347,7 +347,13 @@ PlanResult plan_job(const aco::HoleSet& holes, const PlanOptions& options, const
     if (last) p.end = m.start;
     p.points.reserve(group.input_order.size());
     for (aco::HoleIndex h : group.input_order) p.points.push_back(holes[h].center);
-    group.solution = aco::solve(p, options.solver);
+    // --time-limit bounds the whole run: each tool gets its share by hole count.
+    aco::Params params = options.solver;
+    if (params.time_limit_s > 0) {
+      params.time_limit_s = std::max(0.01, options.solver.time_limit_s * static_cast<double>(group.input_order.size()) /
+                                               static_cast<double>(holes.size()));
+    }
+    group.solution = aco::solve(p, params);
     for (aco::HoleIndex local : group.solution.order) group.optimized.push_back(group.input_order[local]);
     aco::Problem pnn = p;
     pnn.start = at_nn;
