@@ -21,6 +21,7 @@
 #include "aco/hole_set.h"
 #include "app/errors.h"
 #include "gcode/program.h"
+#include "text.h"
 
 namespace app {
 
@@ -28,17 +29,10 @@ namespace {
 
 constexpr double kInch = 25.4;
 
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && (s.front() == ' ' || s.front() == '\t' || s.front() == '\r')) s.remove_prefix(1);
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) s.remove_suffix(1);
-  return s;
-}
-
 bool starts_with(std::string_view s, std::string_view p) { return s.substr(0, p.size()) == p; }
 
 struct Format {
   bool metric = false;
-  bool units_known = false;
   enum class Zeros { Unknown, Leading, Trailing } zeros = Zeros::Unknown;  // which zeros are KEPT
   int int_digits = 0, dec_digits = 0;  // 0: the default for the units
   int ints() const { return int_digits ? int_digits : (metric ? 3 : 2); }
@@ -127,7 +121,6 @@ void Reader::header_line(std::string_view s) {
   }
   if (starts_with(s, "INCH") || starts_with(s, "METRIC")) {
     fmt_.metric = starts_with(s, "METRIC");
-    fmt_.units_known = true;
     std::size_t comma = s.find(',');
     while (comma != std::string_view::npos) {
       std::size_t next = s.find(',', comma + 1);
@@ -148,12 +141,10 @@ void Reader::header_line(std::string_view s) {
   }
   if (s == "M71") {
     fmt_.metric = true;
-    fmt_.units_known = true;
     return;
   }
   if (s == "M72") {
     fmt_.metric = false;
-    fmt_.units_known = true;
     return;
   }
   // FMAT, ICI, VER, DETECT, ATC, OM48, G90/G91 ...: settings that do not move a hit.
@@ -342,10 +333,9 @@ LoadedHoles Reader::run(std::string_view data) {
           fmt_.dec_digits = b;
         }
         if (g != std::string_view::npos) {
-          if (spec.find("inch") != std::string_view::npos) fmt_.metric = false, fmt_.units_known = true;
+          if (spec.find("inch") != std::string_view::npos) fmt_.metric = false;
           if (spec.find("metric") != std::string_view::npos || spec.find("mm") != std::string_view::npos) {
             fmt_.metric = true;
-            fmt_.units_known = true;
           }
           if (spec.find("suppress trailing") != std::string_view::npos) fmt_.zeros = Format::Zeros::Leading;
           if (spec.find("suppress leading") != std::string_view::npos) fmt_.zeros = Format::Zeros::Trailing;

@@ -11,16 +11,11 @@
 #include "app/errors.h"
 #include "app/files.h"
 #include "app/excellon.h"
+#include "text.h"
 
 namespace app {
 
 namespace {
-
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
-  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.remove_suffix(1);
-  return s;
-}
 
 bool parse_number(std::string_view s, double& out) {
   s = trim(s);
@@ -72,13 +67,10 @@ void check_text(const std::string& path, std::string_view data) {
 }
 
 void filter(LoadedHoles& out, const InputOptions& options) {
-  const auto& o = options.dxf;
   aco::HoleSet kept;
   kept.reserve(out.holes.size());
   for (aco::Hole& h : out.holes) {
-    bool layer_ok = o.layers.empty();
-    for (const std::string& p : o.layers) layer_ok = layer_ok || dxf::wildcard_match(p, h.layer);
-    if (!layer_ok || h.diameter < o.min_diameter_mm - 1e-6 || h.diameter > o.max_diameter_mm + 1e-6) {
+    if (!dxf::selected(h, options.dxf)) {
       ++out.skipped_by_filter;
       continue;
     }

@@ -69,4 +69,22 @@ std::string convergence_csv(const PlanResult& plan) {
   return out.str();
 }
 
+std::string holes_csv(const aco::HoleSet& holes) {
+  std::string out = "x_mm,y_mm,diameter_mm,layer\n";
+  out.reserve(holes.size() * 40 + 32);
+  for (const aco::Hole& h : holes) {
+    out += gcode::format_number(h.center.x, 6) + "," + gcode::format_number(h.center.y, 6) + "," +
+           gcode::format_number(h.diameter, 6) + ",";
+    if (h.layer.find_first_of(",\"\n") != std::string::npos) {
+      std::string q = "\"";
+      for (char c : h.layer) q += (c == '"') ? std::string("\"\"") : std::string(1, c);
+      out += q + "\"";
+    } else {
+      out += h.layer;
+    }
+    out += "\n";
+  }
+  return out;
+}
+
 }  // namespace app

@@ -564,14 +564,7 @@ void Parser::expand() {
     if (!std::isfinite(h.center.x) || !std::isfinite(h.center.y) || !std::isfinite(h.diameter)) {
       throw ReadError(h.source_line, "circle lies outside the representable range");
     }
-    bool keep_layer = options_.layers.empty();
-    for (const std::string& pattern : options_.layers) {
-      if (wildcard_match(pattern, h.layer)) {
-        keep_layer = true;
-        break;
-      }
-    }
-    if (!keep_layer || h.diameter < options_.min_diameter_mm - kTol || h.diameter > options_.max_diameter_mm + kTol) {
+    if (!selected(h, options_)) {
       ++result_.skipped_by_filter;
       continue;
     }
@@ -579,10 +572,6 @@ void Parser::expand() {
   }
   result_.duplicates_removed = aco::remove_duplicate_holes(out, kTol);
   raw_.clear();
-  if (result_.duplicates_removed > 0) {
-    result_.diagnostics.push_back({Severity::Warning, 0,
-                                   std::to_string(result_.duplicates_removed) + " duplicate hole(s) removed"});
-  }
 }
 
 void check_text_encoding(std::string_view data) {
@@ -632,6 +621,16 @@ double insunits_to_mm(int code) {
     case 24: return 1609347.218694;            // US survey miles
     default: return 0.0;
   }
+}
+
+bool selected(const aco::Hole& hole, const ReadOptions& options) {
+  constexpr double kTol = 1e-6;
+  if (hole.diameter < options.min_diameter_mm - kTol || hole.diameter > options.max_diameter_mm + kTol) return false;
+  if (options.layers.empty()) return true;
+  for (const std::string& pattern : options.layers) {
+    if (wildcard_match(pattern, hole.layer)) return true;
+  }
+  return false;
 }
 
 bool wildcard_match(std::string_view pattern, std::string_view text) {

@@ -158,18 +158,9 @@ HoleIndex Colony::nearest_unvisited(HoleIndex cur, const AntWork& w) const {
   // Every candidate is visited: take the nearest unvisited hole, which is the
   // argmax of tau^alpha * eta^beta when all non-candidate edges share one tau.
   // The grid finds it without scanning every unvisited hole (that scan made
-  // tour construction quadratic on large panels).
-  if (w.grid) return w.grid->nearest(space_.point(cur), [&](HoleIndex h) { return space_.d(cur, h); });
-  HoleIndex best = w.unvisited[0];
-  double best_d = std::numeric_limits<double>::infinity();
-  for (HoleIndex h : w.unvisited) {
-    const double d = space_.e(cur, h);
-    if (d < best_d || (d == best_d && h < best)) {
-      best_d = d;
-      best = h;
-    }
-  }
-  return best;
+  // tour construction quadratic on large panels). Only candidate-list mode
+  // gets here, and it always has a grid.
+  return w.grid->nearest(space_.point(cur), [&](HoleIndex h) { return space_.d(cur, h); });
 }
 
 HoleIndex Colony::choose_next(HoleIndex cur, AntWork& w, Rng& rng, bool acs) {
@@ -244,7 +235,7 @@ void Colony::construct(AntWork& w, Rng& rng, bool acs) {
   w.where.resize(n_);
   std::iota(w.unvisited.begin(), w.unvisited.end(), 0);
   std::iota(w.where.begin(), w.where.end(), 0);
-  const bool use_grid = dense_choice_.empty() && n_ > 64;
+  const bool use_grid = dense_choice_.empty();  // candidate-list mode
   if (use_grid) {
     if (!w.grid) w.grid = std::make_unique<detail::BucketGrid>(space_);
     else w.grid->reset();

@@ -168,13 +168,12 @@ bool LocalSearcher::try_or_opt(HoleIndex a) {
   return false;
 }
 
-double LocalSearcher::improve(std::vector<HoleIndex>& route, bool or_opt) {
+void LocalSearcher::improve(std::vector<HoleIndex>& route, bool or_opt) {
   m_ = route.size();
-  if (m_ < 4 || cand_.k == 0) return 0.0;
+  if (m_ < 4 || cand_.k == 0) return;
   route_.assign(route.begin(), route.end());
   pos_.assign(m_ + 1, 0);
   for (std::size_t i = 0; i < m_; ++i) pos_[route_[i]] = i;
-  const double before = space_.route_cost(route_);
   std::fill(queued_.begin(), queued_.end(), 0);
   windowed_ = m_ > kWindow;
   if (!windowed_) {
@@ -198,7 +197,6 @@ double LocalSearcher::improve(std::vector<HoleIndex>& route, bool or_opt) {
     }
   }
   route.assign(route_.begin(), route_.end());
-  return before - space_.route_cost(route_);
 }
 
 void LocalSearcher::run_queue(bool or_opt) {

@@ -16,13 +16,13 @@ class alignas(64) LocalSearcher {
  public:
   LocalSearcher(const Space& space, const Candidates& candidates);
 
-  // Improves `route` in place until no move gains; returns the gain.
+  // Improves `route` in place until no move gains.
   // `or_opt` adds segment moves of 1 to 3 holes to the 2-opt moves.
   // Routes longer than kWindow are improved in overlapping windows of
   // kWindow positions: an array 2-opt move reverses up to half the route, so
   // on a million holes whole-route search is quadratic; windows keep every
   // move's cost bounded and the pass linear.
-  double improve(std::vector<HoleIndex>& route, bool or_opt);
+  void improve(std::vector<HoleIndex>& route, bool or_opt);
   static constexpr std::size_t kWindow = 100000;
 
  private:

@@ -10,10 +10,13 @@ namespace app {
 struct ReportContext {
   std::string source;   // input file
   std::string program;  // output program
-  std::size_t holes = 0;
 };
 
 std::string report_json(const aco::HoleSet& holes, const PlanResult& plan, const ReportContext& context);
 std::string convergence_csv(const PlanResult& plan);
+
+// The holes as `acodrill holes --format csv` prints them (../shared/interface.md):
+// header x_mm,y_mm,diameter_mm,layer; 6 decimals; a layer with a comma or quote quoted.
+std::string holes_csv(const aco::HoleSet& holes);
 
 }  // namespace app

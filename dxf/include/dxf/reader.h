@@ -74,6 +74,10 @@ ReadResult read_holes(std::string_view data, const ReadOptions& options = {});
 // True when the first bytes look like a DXF (ASCII "0 / SECTION" or the binary sentinel).
 bool looks_like_dxf(std::string_view head);
 
+// The selection every reader applies: --layer patterns and the diameter range
+// (mm, 1e-6 mm tolerance).
+bool selected(const aco::Hole& hole, const ReadOptions& options);
+
 // Case-insensitive match with * (any run) and ? (one character).
 bool wildcard_match(std::string_view pattern, std::string_view text);
 

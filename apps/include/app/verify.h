@@ -1,0 +1,18 @@
+#pragma once
+// The check behind `acodrill verify --holes`: every input hole drilled
+// exactly once, at its place, with a tool of its diameter.
+#include <string>
+#include <vector>
+
+#include "aco/geometry.h"
+#include "gcode/interpreter.h"
+
+namespace app {
+
+// One line per fault, in a stable order; empty when the program is right.
+// Positions match within the program's printed precision; where the program
+// names its tools' diameters ("(T1 D=...)"), concentric holes are told apart
+// by them and a hole drilled with a tool of another diameter is a fault.
+std::vector<std::string> check_drilled(const gcode::Interpretation& run, const aco::HoleSet& expected);
+
+}  // namespace app

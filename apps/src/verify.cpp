@@ -1,0 +1,75 @@
+#include "app/verify.h"
+
+#include <cmath>
+#include <map>
+
+#include "gcode/program.h"
+
+namespace app {
+
+std::vector<std::string> check_drilled(const gcode::Interpretation& run, const aco::HoleSet& expected) {
+  // Each input hole must be drilled exactly once, at its place (within the
+  // program's printed precision), by a tool of its diameter.
+  const double tol = run.inch ? 0.00006 * 25.4 + 1e-6 : 0.0006 + 1e-6;
+  std::vector<char> used(run.holes.size(), 0);
+  // Bucket drilled positions on a grid of the tolerance for near-linear matching.
+  std::multimap<std::pair<long long, long long>, std::size_t> grid;
+  auto cell = [&](double x, double y) { return std::make_pair(std::llround(x / (2 * tol)), std::llround(y / (2 * tol))); };
+  for (std::size_t i = 0; i < run.holes.size(); ++i) grid.emplace(cell(run.holes[i].x_mm, run.holes[i].y_mm), i);
+  std::vector<std::string> faults;
+  std::map<long long, int> tool_of_diameter;  // diameter (µm) → tool
+  for (const aco::Hole& h : expected) {
+    auto [cx, cy] = cell(h.center.x, h.center.y);
+    std::vector<std::size_t> matches;
+    for (long long dx = -1; dx <= 1; ++dx) {
+      for (long long dy = -1; dy <= 1; ++dy) {
+        auto range = grid.equal_range({cx + dx, cy + dy});
+        for (auto it = range.first; it != range.second; ++it) {
+          const auto& d = run.holes[it->second];
+          if (std::fabs(d.x_mm - h.center.x) <= tol && std::fabs(d.y_mm - h.center.y) <= tol) matches.push_back(it->second);
+        }
+      }
+    }
+    const std::string at = "(" + gcode::format_number(h.center.x, 3) + ", " + gcode::format_number(h.center.y, 3) + ")";
+    if (matches.empty()) {
+      faults.push_back("hole " + at + " D" + gcode::format_number(h.diameter, 3) + " is not drilled");
+      continue;
+    }
+    // Concentric holes share a position: the one that drills this hole is the
+    // one whose tool has its diameter, where the program names its tools.
+    std::vector<std::size_t> same_tool;
+    for (std::size_t m : matches) {
+      auto known = run.tool_diameter_mm.find(run.holes[m].tool);
+      if (known == run.tool_diameter_mm.end() || h.diameter <= 0 || std::fabs(known->second - h.diameter) <= 0.0015) {
+        same_tool.push_back(m);
+      }
+    }
+    if (same_tool.empty()) {
+      const auto& d = run.holes[matches.front()];
+      faults.push_back("hole " + at + " D" + gcode::format_number(h.diameter, 3) + " is drilled with T" +
+                       std::to_string(d.tool) + " D" + gcode::format_number(run.tool_diameter_mm.at(d.tool), 3) +
+                       " (line " + std::to_string(d.line) + ")");
+      for (std::size_t m : matches) used[m] = 1;
+      continue;
+    }
+    if (same_tool.size() > 1) faults.push_back("hole " + at + " is drilled " + std::to_string(same_tool.size()) + " times");
+    for (std::size_t m : same_tool) used[m] = 1;
+    const auto& d = run.holes[same_tool.front()];
+    const long long key = std::llround(h.diameter * 1000.0);
+    auto [it, inserted] = tool_of_diameter.emplace(key, d.tool);
+    if (!inserted && it->second != d.tool) {
+      faults.push_back("holes of D" + gcode::format_number(h.diameter, 3) + " are drilled with T" +
+                       std::to_string(it->second) + " and T" + std::to_string(d.tool));
+    }
+  }
+  for (std::size_t i = 0; i < run.holes.size(); ++i) {
+    if (!used[i]) {
+      faults.push_back("line " + std::to_string(run.holes[i].line) + " drills (" +
+                       gcode::format_number(run.holes[i].x_mm, 3) + ", " + gcode::format_number(run.holes[i].y_mm, 3) +
+                       "), which is not an input hole");
+    }
+  }
+  return faults;
+}
+
+}  // namespace app
