@@ -11,7 +11,8 @@ BUILD_PACKAGES=(cmake ninja-build g++ libeigen3-dev libtinyxml2-dev libgtest-dev
                 nlohmann-json3-dev libcli11-dev libnanoflann-dev)
 TEST_PACKAGES=(python3-ezdxf librsvg2-bin)
 # LinuxCNC's standalone interpreter rs274 reads our programs back in the tests.
-TEST_PACKAGES_NO_RECOMMENDS=(linuxcnc-uspace gerbv)
+# Headless chromium prints the setup sheet to PDF and pdftotext reads it back.
+TEST_PACKAGES_NO_RECOMMENDS=(linuxcnc-uspace gerbv chromium poppler-utils)
 
 missing_packages() {
   local p

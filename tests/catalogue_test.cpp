@@ -145,7 +145,13 @@ std::vector<BadCase> catalogue() {
       {"missing_output_option", "a.csv", kGoodCsv, "plan {in}", "--output"},
       {"bad_tool_table", "a.csv", kGoodCsv, plan + " --tools {dir}/tools.json", "tools.json:2: invalid JSON"},
       {"hole_no_tool_fits", "a.csv", "x,y,d\n1,1,3\n5,5,4\n", plan + " --tools {dir}/tools_ok.json", "1 hole(s) fit no tool"},
-      {"hole_outside_travel", "a.csv", "x,y,d\n1,1,3\n5000,5,3\n", plan, "outside the machine's travel"},
+      {"part_larger_than_travel", "a.csv", "x,y,d\n1,1,3\n5000,5,3\n", plan,
+       "the holes span 5002.000 x 7.000 mm (tool edges included) but the machine travels 762.000 x 406.000 mm"},
+      {"part_fits_only_turned", "a.csv", "x,y,d\n0,0,2\n0,600,2\n", plan, "turned by 90 degrees the part would fit"},
+      {"outside_travel_at_work_offset", "a.csv", "x,y,d\n0,0,2\n100,100,2\n", plan + " --machine {dir}/offset.json",
+       "the holes reach machine X 699.000..801.000"},
+      {"unknown_origin", "a.csv", kGoodCsv, plan + " --origin bottom", "--origin must be"},
+      {"origin_point_not_a_number", "a.csv", kGoodCsv, plan + " --origin 1,abc", "--origin must be"},
       {"bad_machine_profile", "a.csv", kGoodCsv, plan + " --machine {dir}/tools_ok.json", "a machine profile is a JSON object"},
   };
 }
@@ -158,6 +164,7 @@ TEST_P(CatalogueTest, exit_2_one_line_no_output_and_existing_output_untouched) {
   const BadCase& c = GetParam();
   TempDir t;
   spit(t / "tools.json", "{ \"tools\": [ 1, 2, \n");
+  spit(t / "offset.json", "{\"work_offset_x_mm\": 700, \"work_offset_y_mm\": 10}");
   spit(t / "tools_ok.json", "[ {\"number\": 1, \"diameter_mm\": 3} ]\n");
   const std::string in = c.file.empty() ? "" : t / c.file;
   if (!c.file.empty()) spit(in, c.content);

@@ -20,7 +20,7 @@ struct CanonHole {
   double x, y;  // program units
 };
 
-// Each run of STRAIGHT_FEEDs at one XY, after the XY changed, is one hole.
+// Each run of STRAIGHT_FEEDs at one XY, after the XY or the tool changed, is one hole.
 std::vector<CanonHole> holes_from_canon(const std::string& canon) {
   std::vector<CanonHole> holes;
   static const std::regex call(R"((STRAIGHT_TRAVERSE|STRAIGHT_FEED|SELECT_TOOL)\(([^)]*)\))");
@@ -33,6 +33,7 @@ std::vector<CanonHole> holes_from_canon(const std::string& canon) {
     if (!std::regex_search(line, m, call)) continue;
     if (m[1] == "SELECT_TOOL") {
       tool = std::stoi(m[2]);
+      xy_changed = true;  // concentric holes: the next tool may start where the last one ended
       continue;
     }
     std::vector<double> v;
@@ -83,8 +84,10 @@ void check_program(const std::string& program_path, const std::string& sample, b
   ASSERT_EQ(r.code, 0) << what << ": rs274 rejected the program:\n" << r.err;
   EXPECT_EQ(r.err.find("error"), std::string::npos) << r.err;
   std::vector<CanonHole> canon = holes_from_canon(r.out);
-  const aco::HoleSet expected = testutil::read_holes_csv(testutil::slurp(sample.substr(0, sample.size() - 4) + ".holes.csv"));
+  aco::HoleSet expected = testutil::read_holes_csv(testutil::slurp(sample.substr(0, sample.size() - 4) + ".holes.csv"));
   ASSERT_EQ(canon.size(), expected.size()) << what;
+  // Programs put X0 Y0 at the lower left of the holes by default (--origin).
+  testutil::move_lower_left_to_zero(expected);
   // Same multiset of positions (within half the last printed digit), and the
   // same holes, in the same order, with the same tools as our interpreter sees.
   const double scale = inch ? 25.4 : 1.0;
@@ -169,5 +172,103 @@ TEST(linuxcnc_test, every_cycle_and_clamp_retracts_read_back) {
     check_program(nc, sample, false, std::string("all cycles, ") + dialect);
     auto v = testutil::acodrill_run("verify " + testutil::shell_quote(nc) + " --holes " + testutil::shell_quote(sample) + " -q");
     EXPECT_EQ(v.code, 0) << v.out;
+  }
+}
+
+// Issue 13: every drawing whose holes fit a VF-2's table (762 x 406 mm, tool
+// edges included) plans with default options wherever it sits in CAD space,
+// and rs274 reads the program back to the input holes moved to the lower left;
+// every other drawing is refused in one line naming both sizes.
+TEST(linuxcnc_test, every_fixture_drawing_that_fits_the_machine_plans_wherever_it_sits) {
+  ASSERT_TRUE(have_rs274());
+  testutil::TempDir t;
+  int planned = 0, refused = 0;
+  for (const char* dir : {"dxf", "real-dxf"}) {
+    for (const auto& e : std::filesystem::directory_iterator(testutil::data(dir))) {
+      if (e.path().extension() != ".dxf") continue;
+      const std::string drawing = e.path().string();
+      const std::string csv = drawing.substr(0, drawing.size() - 4) + ".holes.csv";
+      if (!std::filesystem::exists(csv)) continue;
+      const aco::HoleSet holes = testutil::read_holes_csv(testutil::slurp(csv));
+      if (holes.empty()) continue;
+      double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
+      for (const aco::Hole& h : holes) {
+        x0 = std::min(x0, h.center.x - h.diameter / 2);
+        x1 = std::max(x1, h.center.x + h.diameter / 2);
+        y0 = std::min(y0, h.center.y - h.diameter / 2);
+        y1 = std::max(y1, h.center.y + h.diameter / 2);
+      }
+      const bool fits = x1 - x0 <= 762.0 && y1 - y0 <= 406.0;
+      const std::string nc = t / "p.nc";
+      std::filesystem::remove(nc);
+      auto r = testutil::acodrill_run("plan " + testutil::shell_quote(drawing) + " -o " + testutil::shell_quote(nc) +
+                                      " -q --iterations 10");
+      if (!fits) {
+        EXPECT_EQ(r.code, 2) << drawing;
+        EXPECT_EQ(testutil::count_lines(r.err), 1) << r.err;
+        EXPECT_THAT(r.err, ::testing::HasSubstr("the machine travels 762.000 x 406.000 mm")) << drawing;
+        const bool turned = y1 - y0 <= 762.0 && x1 - x0 <= 406.0;
+        EXPECT_EQ(r.err.find("turned by 90 degrees") != std::string::npos, turned) << r.err;
+        EXPECT_FALSE(std::filesystem::exists(nc));
+        ++refused;
+        continue;
+      }
+      ASSERT_EQ(r.code, 0) << drawing << ": " << r.err;
+      check_program(nc, drawing, false, drawing);
+      auto v = testutil::acodrill_run("verify " + testutil::shell_quote(nc) + " --holes " + testutil::shell_quote(drawing) + " -q");
+      EXPECT_EQ(v.code, 0) << drawing << ": " << v.out;
+      ++planned;
+    }
+  }
+  EXPECT_GE(planned, 15);
+  EXPECT_GE(refused, 4);
+}
+
+TEST(linuxcnc_test, a_larger_machine_plans_what_a_vf2_refuses_and_origins_move_the_program) {
+  ASSERT_TRUE(have_rs274());
+  testutil::TempDir t;
+  const std::string drawing = testutil::data("dxf/r2010_blocks.dxf");  // 419 x 586 mm: too deep for a VF-2
+  testutil::spit(t / "vf5.json", R"({"name": "VF-5/50", "x_max_mm": 1270, "y_max_mm": 660})");
+  auto r = testutil::acodrill_run("plan " + testutil::shell_quote(drawing) + " -o " + testutil::shell_quote(t / "p.nc") +
+                                  " -q --iterations 10 --machine " + testutil::shell_quote(t / "vf5.json"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  check_program(t / "p.nc", drawing, false, "VF-5");
+
+  // A part drawn a million mm from the drawing's zero: every origin gives the
+  // same holes, moved; `drawing` keeps CAD coordinates.
+  const std::string far = testutil::data("dxf/r2010_far_offset.dxf");
+  const aco::HoleSet holes = testutil::read_holes_csv(testutil::slurp(testutil::data("dxf/r2010_far_offset.holes.csv")));
+  double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
+  for (const aco::Hole& h : holes) {
+    x0 = std::min(x0, h.center.x), x1 = std::max(x1, h.center.x);
+    y0 = std::min(y0, h.center.y), y1 = std::max(y1, h.center.y);
+  }
+  const std::vector<std::pair<std::string, aco::Point2>> origins = {
+      {"drawing", {0, 0}}, {"lower-left", {x0, y0}}, {"center", {(x0 + x1) / 2, (y0 + y1) / 2}},
+      {"upper-left", {x0, y1}}, {"1000000,-2000000", {1000000, -2000000}}};
+  for (const auto& [origin, zero] : origins) {
+    const std::string nc = t / "far.nc";
+    auto p = testutil::acodrill_run("plan " + testutil::shell_quote(far) + " -o " + testutil::shell_quote(nc) +
+                                    " -q --iterations 10 --dialect linuxcnc --origin " + origin);
+    ASSERT_EQ(p.code, 0) << origin << ": " << p.err;
+    const std::string prog = testutil::slurp(nc);
+    // The operator reads where the holes are from the header.
+    EXPECT_THAT(prog, ::testing::HasSubstr("(ORIGIN: ")) << origin;
+    EXPECT_THAT(prog, ::testing::ContainsRegex(R"(EXTENT X-?[0-9.]+\.\.-?[0-9.]+ Y-?[0-9.]+\.\.-?[0-9.]+ MM\))")) << origin;
+    gcode::Interpretation run = gcode::interpret(prog);
+    ASSERT_EQ(run.holes.size(), holes.size());
+    for (const gcode::DrilledHole& d : run.holes) {
+      bool found = false;
+      for (const aco::Hole& h : holes) {
+        found = found || (std::fabs(h.center.x - zero.x - d.x_mm) <= 0.0006 && std::fabs(h.center.y - zero.y - d.y_mm) <= 0.0006);
+      }
+      EXPECT_TRUE(found) << origin << ": (" << d.x_mm << ", " << d.y_mm << ")";
+    }
+    // verify follows the program's stated zero, or the --origin it is given.
+    auto v = testutil::acodrill_run("verify " + testutil::shell_quote(nc) + " --holes " + testutil::shell_quote(far) + " -q");
+    EXPECT_EQ(v.code, 0) << origin << ": " << v.out;
+    auto v2 = testutil::acodrill_run("verify " + testutil::shell_quote(nc) + " --holes " + testutil::shell_quote(far) +
+                                     " -q --origin " + origin);
+    EXPECT_EQ(v2.code, 0) << origin << ": " << v2.out;
   }
 }

@@ -3,6 +3,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -93,6 +94,19 @@ inline aco::HoleSet read_holes_csv(const std::string& text) {
     holes.push_back({{std::stod(x), std::stod(y)}, std::stod(d), layer, 0});
   }
   return holes;
+}
+
+// The holes moved so that the lower left of their centres' bounding box is
+// (0, 0): where acodrill puts program zero by default. Computed here, not by
+// acodrill, so the tests check its placement independently.
+inline void move_lower_left_to_zero(aco::HoleSet& holes) {
+  if (holes.empty()) return;
+  double x0 = holes[0].center.x, y0 = holes[0].center.y;
+  for (const aco::Hole& h : holes) {
+    x0 = std::min(x0, h.center.x);
+    y0 = std::min(y0, h.center.y);
+  }
+  for (aco::Hole& h : holes) h.center = {h.center.x - x0, h.center.y - y0};
 }
 
 inline int count_lines(const std::string& s) {

@@ -20,6 +20,7 @@
 #include "app/inputs.h"
 #include "app/plan.h"
 #include "app/report.h"
+#include "app/setup_sheet.h"
 #include "app/svg.h"
 #include "app/verify.h"
 #include "gcode/interpreter.h"
@@ -122,6 +123,23 @@ void print_warnings(const app::LoadedHoles& loaded, const std::string& path, boo
   std::cerr << "acodrill: " << (path == "-" ? "<stdin>" : path) << ": " << summary << "\n";
 }
 
+app::Origin parse_origin(const std::string& text) {
+  auto origin = app::origin_from_string(text);
+  if (!origin) {
+    throw app::UserError("--origin must be drawing, lower-left, center, upper-left or X,Y in mm (got \"" + text + "\")");
+  }
+  return *origin;
+}
+
+// "ORIGIN: LOWER-LEFT OF HOLES; EXTENT X0.000..150.000 Y0.000..240.000 MM", in program units.
+std::string origin_comment(const app::Placement& p, gcode::Units units) {
+  const bool inch = units == gcode::Units::Inch;
+  auto c = [&](double mm) { return gcode::format_number(inch ? mm / 25.4 : mm, inch ? 4 : 3); };
+  const app::Extent& e = p.extent;
+  return "ORIGIN: " + app::describe(p.origin) + "; EXTENT X" + c(e.x_min) + ".." + c(e.x_max) + " Y" + c(e.y_min) +
+         ".." + c(e.y_max) + (inch ? " IN" : " MM");
+}
+
 std::string format_minutes(double seconds) {
   return gcode::format_number(seconds / 60.0, 2) + " min";
 }
@@ -137,8 +155,8 @@ int cmd_holes(const std::string& input, const InputArgs& in_args, const std::str
 }
 
 struct PlanArgs {
-  std::string input, output, report, svg, svg_compare, convergence, excellon;
-  std::string dialect = "haas", units, tools, machine, material, objective = "distance";
+  std::string input, output, report, svg, svg_compare, convergence, excellon, setup_sheet;
+  std::string dialect = "haas", units, tools, machine, material, objective = "distance", origin = "lower-left";
   std::optional<double> thickness;
   std::size_t resume_from = 1;
   int program_number = 1001;
@@ -147,13 +165,14 @@ struct PlanArgs {
 
 int cmd_plan(const PlanArgs& a, const SolverArgs& s, const InputArgs& in_args) {
   // Refuse to overwrite the input with the program before doing any work.
-  for (const std::string* out : {&a.output, &a.report, &a.svg, &a.svg_compare, &a.convergence, &a.excellon}) {
+  for (const std::string* out : {&a.output, &a.report, &a.svg, &a.svg_compare, &a.convergence, &a.excellon, &a.setup_sheet}) {
     if (!out->empty() && app::same_file(a.input, *out)) {
       throw app::UserError(*out, 0, "output would overwrite the input file");
     }
   }
   app::PlanOptions o;
   o.solver = to_params(s);
+  const app::Origin origin = parse_origin(a.origin);
   auto dialect = gcode::dialect_from_string(a.dialect);
   if (!dialect) throw app::UserError("--dialect must be haas, fanuc or linuxcnc (got \"" + a.dialect + "\")");
   o.program.dialect = *dialect;
@@ -188,6 +207,8 @@ int cmd_plan(const PlanArgs& a, const SolverArgs& s, const InputArgs& in_args) {
   }
   const std::string source = a.input == "-" ? "<stdin>" : a.input;
   const std::string source_name = source.substr(source.find_last_of('/') == std::string::npos ? 0 : source.find_last_of('/') + 1);
+  // Program zero where the machinist will set the work offset.
+  const app::Placement placement = app::place_holes(loaded.holes, origin);
   app::PlanResult plan = app::plan_job(loaded.holes, o, source);
   if (progress) std::fprintf(stderr, "\r%60s\r", "");
 
@@ -203,7 +224,9 @@ int cmd_plan(const PlanArgs& a, const SolverArgs& s, const InputArgs& in_args) {
       "EST. TIME " + format_minutes(plan.optimized.time_s) + ", TRAVEL " +
           gcode::format_number(plan.optimized.travel_mm, 1) + " MM",
       "ORDER: ACODRILL " + std::string(aco::to_string(plan.solver.algorithm)) + " SEED " +
-          std::to_string(plan.solver.seed)};
+          std::to_string(plan.solver.seed),
+      origin_comment(placement, ps.units),
+      app::zero_comment(placement)};
   std::ostringstream program;
   const std::vector<gcode::ToolPass> passes = app::to_passes(loaded.holes, plan, o.machine);
   try {
@@ -214,15 +237,23 @@ int cmd_plan(const PlanArgs& a, const SolverArgs& s, const InputArgs& in_args) {
 
   // Everything is computed; now write, each file complete or not at all.
   app::write_file_atomic(a.output, program.str());
-  app::ReportContext ctx{source, a.output};
+  app::ReportContext ctx{source, a.output, placement, loaded.name};
   if (!a.report.empty()) app::write_file_atomic(a.report, app::report_json(loaded.holes, plan, ctx));
   if (!a.convergence.empty()) app::write_file_atomic(a.convergence, app::convergence_csv(plan));
-  if (!a.svg.empty()) app::write_file_atomic(a.svg, app::route_svg(loaded.holes, plan, o, loaded.name));
-  if (!a.svg_compare.empty()) app::write_file_atomic(a.svg_compare, app::compare_svg(loaded.holes, plan, o, loaded.name));
+  if (!a.svg.empty()) app::write_file_atomic(a.svg, app::route_svg(loaded.holes, plan, o, placement, loaded.name));
+  if (!a.svg_compare.empty()) {
+    app::write_file_atomic(a.svg_compare, app::compare_svg(loaded.holes, plan, o, placement, loaded.name));
+  }
+  if (!a.setup_sheet.empty()) app::write_file_atomic(a.setup_sheet, app::setup_sheet_html(loaded.holes, plan, o, ctx));
   if (!a.excellon.empty()) {
     // The input's own units when it is Excellon, unless --units chose others.
     const bool metric = a.units.empty() ? loaded.metric.value_or(true) : o.program.units == gcode::Units::Mm;
-    app::write_file_atomic(a.excellon, app::write_excellon(passes, metric, source_name));
+    // A drill file stays in the input's coordinates, registered with the board's other layers.
+    std::vector<gcode::ToolPass> in_input = passes;
+    for (gcode::ToolPass& p : in_input) {
+      for (aco::Point2& h : p.holes) h = {h.x + placement.zero.x, h.y + placement.zero.y};
+    }
+    app::write_file_atomic(a.excellon, app::write_excellon(in_input, metric, source_name));
   }
 
   if (!a.quiet) {
@@ -249,6 +280,13 @@ int cmd_plan(const PlanArgs& a, const SolverArgs& s, const InputArgs& in_args) {
     if (!a.excellon.empty()) std::fprintf(stderr, "  excellon: %s\n", a.excellon.c_str());
     if (!a.svg.empty()) std::fprintf(stderr, "  picture: %s\n", a.svg.c_str());
     if (!a.svg_compare.empty()) std::fprintf(stderr, "  comparison: %s\n", a.svg_compare.c_str());
+    if (!a.setup_sheet.empty()) std::fprintf(stderr, "  setup sheet: %s\n", a.setup_sheet.c_str());
+    const app::Extent& e = placement.extent;
+    std::fprintf(stderr, "  program zero: %s (drawing X%s Y%s mm); holes X%s..%s Y%s..%s mm\n",
+                 app::describe(placement.origin).c_str(), gcode::format_number(placement.zero.x, 3).c_str(),
+                 gcode::format_number(placement.zero.y, 3).c_str(), gcode::format_number(e.x_min, 3).c_str(),
+                 gcode::format_number(e.x_max, 3).c_str(), gcode::format_number(e.y_min, 3).c_str(),
+                 gcode::format_number(e.y_max, 3).c_str());
   }
   return 0;
 }
@@ -286,7 +324,8 @@ int cmd_tsp(const std::string& input, const std::string& tour, const SolverArgs&
   return 0;
 }
 
-int cmd_verify(const std::string& program_path, const std::string& holes_path, const InputArgs& in_args, bool quiet) {
+int cmd_verify(const std::string& program_path, const std::string& holes_path, const std::string& origin_text,
+               const InputArgs& in_args, bool quiet) {
   const std::string text = app::read_file(program_path);
   gcode::Interpretation run;
   try {
@@ -306,6 +345,14 @@ int cmd_verify(const std::string& program_path, const std::string& holes_path, c
   if (holes_path.empty()) return 0;
 
   app::LoadedHoles expected = app::load_holes(holes_path, to_input_options(in_args));
+  // The holes as the program should drill them: moved to the program zero
+  // --origin names, else the one the program states (acodrill writes it in its
+  // header), else where they are (another CAM's program).
+  if (!origin_text.empty()) {
+    app::place_holes(expected.holes, parse_origin(origin_text));
+  } else if (auto zero = app::stated_zero(text)) {
+    app::place_holes(expected.holes, app::Origin{app::OriginKind::Point, *zero});
+  }
   const std::vector<std::string> faults = app::check_drilled(run, expected.holes);
   if (faults.empty()) {
     std::printf("ok: %zu input holes drilled once each with the right tool\n", expected.holes.size());
@@ -344,6 +391,8 @@ int main(int argc, char** argv) {
       "  acodrill plan plate.dxf -o plate.nc --report r.json --convergence c.csv\n"
       "  acodrill plan plate.dxf -o plate.nc --tools tools.json --machine vf2.json\n"
       "  acodrill plan plate.dxf -o plate.nc --resume-from 37      restart at hole N37 after a broken drill\n"
+      "  acodrill plan plate.dxf -o plate.nc --origin center --setup-sheet plate.html\n"
+      "                                                            zero at the holes' centre; a sheet for the operator\n"
       "  acodrill plan plate.dxf -o plate.nc --algorithm as --local-search none --ants 125 --iterations 125\n"
       "                                                            the thesis's Ant System\n"
       "Inputs: DXF, Excellon, XML hole map, CSV (x,y,diameter mm), TSPLIB; '-' reads stdin.");
@@ -354,6 +403,12 @@ int main(int argc, char** argv) {
   plan_cmd->add_option("--svg-compare", plan.svg_compare, "Write input order and optimized route side by side (SVG)");
   plan_cmd->add_option("--convergence", plan.convergence, "Write best length by iteration and time (CSV)");
   plan_cmd->add_option("--excellon", plan.excellon, "Also write the optimized order as an Excellon drill file");
+  plan_cmd->add_option("--setup-sheet", plan.setup_sheet,
+                       "Write a printable setup sheet (HTML): program zero, tools, times, route picture");
+  plan_cmd->add_option("--origin", plan.origin,
+                       "Program zero (X0 Y0) on the part: lower-left (default) | center | upper-left of the holes' "
+                       "bounding box, drawing (keep CAD coordinates) or X,Y (a point of the drawing, mm). The "
+                       "machinist sets the work offset (G54) there; the program header says where it is");
   plan_cmd->add_option("--dialect", plan.dialect, "haas (default) | fanuc | linuxcnc");
   plan_cmd->add_option("--units", plan.units, "Program units: mm (default) | inch");
   plan_cmd->add_option("--tools", plan.tools, "Tool table (JSON); default: one tool per diameter");
@@ -386,13 +441,16 @@ int main(int argc, char** argv) {
   tsp_cmd->add_flag("-q,--quiet", quiet, "Print only the length");
   add_solver_options(tsp_cmd, tsp_solver);
 
-  std::string verify_program, verify_holes;
+  std::string verify_program, verify_holes, verify_origin;
   InputArgs verify_in;
   auto* verify_cmd = cli.add_subcommand("verify", "Read a drilling program back: what it drills, with which tool");
   verify_cmd->footer("Exit 1 when --holes is given and a hole is missed, repeated, moved or drilled with the wrong tool.\n"
                      "Example:\n  acodrill verify plate.nc --holes plate.dxf");
   verify_cmd->add_option("program", verify_program, "G-code program")->required();
   verify_cmd->add_option("--holes", verify_holes, "The input the program should drill");
+  verify_cmd->add_option("--origin", verify_origin,
+                         "Where the program's zero sits on the --holes input (as for plan); default: what the "
+                         "program's header states, else the input's own coordinates");
   verify_cmd->add_flag("-q,--quiet", quiet, "No summary on stderr");
   add_input_options(verify_cmd, verify_in);
 
@@ -423,7 +481,7 @@ int main(int argc, char** argv) {
     if (*plan_cmd) return cmd_plan(plan, solver, in_args);
     if (*holes_cmd) return cmd_holes(holes_input, holes_in, holes_format, quiet);
     if (*tsp_cmd) return cmd_tsp(tsp_input, tsp_tour, tsp_solver, quiet);
-    if (*verify_cmd) return cmd_verify(verify_program, verify_holes, verify_in, quiet);
+    if (*verify_cmd) return cmd_verify(verify_program, verify_holes, verify_origin, verify_in, quiet);
   } catch (const app::UserError& e) {
     std::cerr << "acodrill: error: " << e.where_what() << "\n";
     return 2;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <charconv>
 #include <map>
 #include <nlohmann/json.hpp>
 
@@ -69,6 +70,9 @@ Machine load_machine(const std::string& path) {
   }
   if (m.tool_change_s < 0) throw UserError(path, 0, "tool_change_s must be >= 0");
   if (!(m.x_min < m.x_max) || !(m.y_min < m.y_max)) throw UserError(path, 0, "travel limits are empty (min >= max)");
+  const bool has_wx = j.contains("work_offset_x_mm"), has_wy = j.contains("work_offset_y_mm");
+  if (has_wx != has_wy) throw UserError(path, 0, "give both work_offset_x_mm and work_offset_y_mm, or neither");
+  if (has_wx) m.work_offset = aco::Point2{json_number(j, "work_offset_x_mm", 0, path), json_number(j, "work_offset_y_mm", 0, path)};
   if (j.contains("clamps")) {
     if (!j["clamps"].is_array()) throw UserError(path, 0, "\"clamps\" is a list of {x_min_mm, y_min_mm, x_max_mm, y_max_mm}");
     for (const json& c : j["clamps"]) {
@@ -181,6 +185,141 @@ ToolTable generate_tool_table(const aco::HoleSet& holes, Material material, doub
   return t;
 }
 
+std::optional<Origin> origin_from_string(const std::string& text) {
+  Origin o;
+  if (text == "drawing") o.kind = OriginKind::Drawing;
+  else if (text == "lower-left") o.kind = OriginKind::LowerLeft;
+  else if (text == "center" || text == "centre") o.kind = OriginKind::Center;
+  else if (text == "upper-left") o.kind = OriginKind::UpperLeft;
+  else {
+    const auto comma = text.find(',');
+    if (comma == std::string::npos) return std::nullopt;
+    auto number = [](const std::string& s, double& out) {
+      std::size_t used = 0;
+      try {
+        out = std::stod(s, &used);
+      } catch (const std::exception&) {
+        return false;
+      }
+      return used == s.size() && std::isfinite(out);
+    };
+    o.kind = OriginKind::Point;
+    if (!number(text.substr(0, comma), o.point.x) || !number(text.substr(comma + 1), o.point.y)) return std::nullopt;
+  }
+  return o;
+}
+
+std::string to_string(const Origin& o) {
+  switch (o.kind) {
+    case OriginKind::Drawing: return "drawing";
+    case OriginKind::LowerLeft: return "lower-left";
+    case OriginKind::Center: return "center";
+    case OriginKind::UpperLeft: return "upper-left";
+    case OriginKind::Point: return fmt3(o.point.x) + "," + fmt3(o.point.y);
+  }
+  return "?";
+}
+
+std::string describe(const Origin& o) {
+  switch (o.kind) {
+    case OriginKind::Drawing: return "DRAWING ZERO";
+    case OriginKind::LowerLeft: return "LOWER-LEFT OF HOLES";
+    case OriginKind::Center: return "CENTER OF HOLES";
+    case OriginKind::UpperLeft: return "UPPER-LEFT OF HOLES";
+    case OriginKind::Point: return "DRAWING POINT X" + fmt3(o.point.x) + " Y" + fmt3(o.point.y);
+  }
+  return "?";
+}
+
+Extent extent_of(const aco::HoleSet& holes) {
+  if (holes.empty()) return {};
+  Extent e{holes[0].center.x, holes[0].center.x, holes[0].center.y, holes[0].center.y};
+  for (const aco::Hole& h : holes) {
+    e.x_min = std::min(e.x_min, h.center.x);
+    e.x_max = std::max(e.x_max, h.center.x);
+    e.y_min = std::min(e.y_min, h.center.y);
+    e.y_max = std::max(e.y_max, h.center.y);
+  }
+  return e;
+}
+
+Placement place_holes(aco::HoleSet& holes, const Origin& origin) {
+  Placement p;
+  p.origin = origin;
+  const Extent e = extent_of(holes);
+  switch (origin.kind) {
+    case OriginKind::Drawing: p.zero = {0.0, 0.0}; break;
+    case OriginKind::LowerLeft: p.zero = {e.x_min, e.y_min}; break;
+    case OriginKind::Center: p.zero = {(e.x_min + e.x_max) / 2, (e.y_min + e.y_max) / 2}; break;
+    case OriginKind::UpperLeft: p.zero = {e.x_min, e.y_max}; break;
+    case OriginKind::Point: p.zero = origin.point; break;
+  }
+  if (p.zero.x != 0.0 || p.zero.y != 0.0) {
+    for (aco::Hole& h : holes) {
+      h.center.x -= p.zero.x;
+      h.center.y -= p.zero.y;
+    }
+  }
+  p.extent = extent_of(holes);
+  return p;
+}
+
+std::string zero_comment(const Placement& p) {
+  // Six decimals: verify moves the input holes by this, and must land within
+  // the program's own rounding of each position.
+  return "PROGRAM ZERO AT DRAWING X" + gcode::format_number(p.zero.x, 6) + " Y" + gcode::format_number(p.zero.y, 6) + " MM";
+}
+
+std::optional<aco::Point2> stated_zero(std::string_view program) {
+  static constexpr std::string_view kTag = "(PROGRAM ZERO AT DRAWING X";
+  const auto at = program.find(kTag);
+  if (at == std::string_view::npos) return std::nullopt;
+  // Locale-free, as the emitter wrote it: "<x> Y<y> MM)".
+  std::string_view rest = program.substr(at + kTag.size(), 80);
+  double x = 0, y = 0;
+  auto rx = std::from_chars(rest.data(), rest.data() + rest.size(), x);
+  if (rx.ec != std::errc() || rest.substr(static_cast<std::size_t>(rx.ptr - rest.data()), 2) != " Y") return std::nullopt;
+  rest.remove_prefix(static_cast<std::size_t>(rx.ptr - rest.data()) + 2);
+  auto ry = std::from_chars(rest.data(), rest.data() + rest.size(), y);
+  if (ry.ec != std::errc() || rest.substr(static_cast<std::size_t>(ry.ptr - rest.data()), 4) != " MM)") return std::nullopt;
+  if (!std::isfinite(x) || !std::isfinite(y)) return std::nullopt;
+  return aco::Point2{x, y};
+}
+
+void check_travel(const aco::HoleSet& holes, const Machine& m, const std::string& source) {
+  if (holes.empty()) return;
+  // The part's envelope: hole centres widened by each hole's radius (the tool's edge).
+  Extent env{1e300, -1e300, 1e300, -1e300};
+  for (const aco::Hole& h : holes) {
+    const double r = h.diameter / 2;
+    env.x_min = std::min(env.x_min, h.center.x - r);
+    env.x_max = std::max(env.x_max, h.center.x + r);
+    env.y_min = std::min(env.y_min, h.center.y - r);
+    env.y_max = std::max(env.y_max, h.center.y + r);
+  }
+  const double travel_x = m.x_max - m.x_min, travel_y = m.y_max - m.y_min;
+  constexpr double kSlack = 1e-6;  // mm: a part exactly as large as the travel fits
+  if (env.width() > travel_x + kSlack || env.height() > travel_y + kSlack) {
+    const bool turned = env.height() <= travel_x + kSlack && env.width() <= travel_y + kSlack;
+    throw UserError(source, 0, "the holes span " + fmt3(env.width()) + " x " + fmt3(env.height()) +
+                                   " mm (tool edges included) but the machine travels " + fmt3(travel_x) + " x " +
+                                   fmt3(travel_y) + " mm" +
+                                   (turned ? "; turned by 90 degrees the part would fit: rotate it in CAD"
+                                           : "; use a --machine profile of a larger machine"));
+  }
+  if (!m.work_offset) return;
+  // The profile says where program zero is on the machine: positions are known.
+  const aco::Point2 w = *m.work_offset;
+  if (env.x_min + w.x < m.x_min - kSlack || env.x_max + w.x > m.x_max + kSlack || env.y_min + w.y < m.y_min - kSlack ||
+      env.y_max + w.y > m.y_max + kSlack) {
+    throw UserError(source, 0, "with the work offset at X" + fmt3(w.x) + " Y" + fmt3(w.y) +
+                                   " the holes reach machine X " + fmt3(env.x_min + w.x) + ".." + fmt3(env.x_max + w.x) +
+                                   " Y " + fmt3(env.y_min + w.y) + ".." + fmt3(env.y_max + w.y) +
+                                   " mm, outside the travel X " + fmt3(m.x_min) + ".." + fmt3(m.x_max) + " Y " +
+                                   fmt3(m.y_min) + ".." + fmt3(m.y_max) + " mm");
+  }
+}
+
 bool crosses_clamp(aco::Point2 a, aco::Point2 b, const Machine& machine) {
   // Liang-Barsky: clip the segment against each rectangle.
   for (const Machine::Rect& r : machine.clamps) {
@@ -249,7 +388,11 @@ RouteStats route_stats(const aco::HoleSet& holes, const std::vector<ToolGroup>& 
   aco::Point2 at = m.start;
   for (std::size_t g = 0; g < groups.size(); ++g) {
     const aco::Order& order = *orders[g];
-    if (order.empty()) continue;
+    const double before = st.time_s;
+    if (order.empty()) {
+      st.tool_time_s.push_back(0.0);
+      continue;
+    }
     st.time_s += m.tool_change_s;
     // Down from Z home to the initial plane, once per tool (approximate Z home as 100 mm up).
     st.time_s += rapid_time_s(100.0, m.rapid_z_mm_min, m.accel_mm_s2);
@@ -264,6 +407,7 @@ RouteStats route_stats(const aco::HoleSet& holes, const std::vector<ToolGroup>& 
       at = p;
     }
     st.time_s += rapid_time_s(100.0, m.rapid_z_mm_min, m.accel_mm_s2);
+    st.tool_time_s.push_back(st.time_s - before);
   }
   st.travel_mm += aco::euclidean(at, m.start);
   st.time_s += xy_move_time(at, m.start, m);
@@ -272,14 +416,7 @@ RouteStats route_stats(const aco::HoleSet& holes, const std::vector<ToolGroup>& 
 
 PlanResult plan_job(const aco::HoleSet& holes, const PlanOptions& options, const std::string& source) {
   const Machine& m = options.machine;
-  // Travel limits first: a hole the machine cannot reach is the user's to fix.
-  std::vector<std::string> outside;
-  for (const aco::Hole& h : holes) {
-    if (h.center.x < m.x_min || h.center.x > m.x_max || h.center.y < m.y_min || h.center.y > m.y_max) {
-      if (outside.size() < 5) outside.push_back("(" + fmt3(h.center.x) + ", " + fmt3(h.center.y) + ")");
-      else if (outside.size() == 5) outside.push_back("...");
-    }
-  }
+  check_travel(holes, m, source);
   for (const aco::Hole& h : holes) {
     for (const Machine::Rect& r : m.clamps) {
       if (h.center.x >= r.x_min && h.center.x <= r.x_max && h.center.y >= r.y_min && h.center.y <= r.y_max) {
@@ -287,12 +424,6 @@ PlanResult plan_job(const aco::HoleSet& holes, const PlanOptions& options, const
                                                    ") lies under a clamp of the machine profile");
       }
     }
-  }
-  if (!outside.empty()) {
-    std::string list;
-    for (const auto& o : outside) list += (list.empty() ? "" : " ") + o;
-    throw UserError(source, 0, "hole(s) outside the machine's travel X " + fmt3(m.x_min) + ".." + fmt3(m.x_max) +
-                                   " Y " + fmt3(m.y_min) + ".." + fmt3(m.y_max) + " mm: " + list);
   }
 
   ToolTable table = options.tools ? *options.tools

@@ -52,6 +52,13 @@ std::string report_json(const aco::HoleSet& holes, const PlanResult& plan, const
                  {"rho", plan.solver.rho},
                  {"local_search", aco::to_string(plan.solver.local_search)},
                  {"thread_busy_s", busy}};
+  const Placement& pl = ctx.placement;
+  j["origin"] = {{"mode", to_string(pl.origin)},
+                 {"zero_in_input_mm", {{"x", round6(pl.zero.x)}, {"y", round6(pl.zero.y)}}}};
+  j["extent_mm"] = {{"x_min", round6(pl.extent.x_min)},
+                    {"x_max", round6(pl.extent.x_max)},
+                    {"y_min", round6(pl.extent.y_min)},
+                    {"y_max", round6(pl.extent.y_max)}};
   j["source"] = ctx.source;
   j["program"] = ctx.program;
   return j.dump(2) + "\n";

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "gcode/program.h"
+#include "text.h"
 
 namespace app {
 
@@ -14,20 +15,6 @@ namespace {
 const char* kPalette[] = {"#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9", "#F0E442", "#000000"};
 
 std::string num(double v) { return gcode::format_number(v, 3); }
-
-std::string escape(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '&': out += "&amp;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += (static_cast<unsigned char>(c) < 32) ? ' ' : c;
-    }
-  }
-  return out;
-}
 
 struct Box {
   double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
@@ -43,12 +30,12 @@ struct Box {
 // placed with its lower-left drawing corner at (ox, oy) of the page.
 void panel(std::ostringstream& out, const aco::HoleSet& holes, const PlanResult& plan, const PlanOptions& options,
            const std::vector<const aco::Order*>& orders, const Box& box, double scale, double ox, double oy,
-           const std::string& heading, double travel_mm, double time_s) {
+           const std::string& heading, double travel_mm, double time_s, const Placement& placement) {
   const double h = (box.y1 - box.y0) * scale;
   auto X = [&](double x) { return ox + (x - box.x0) * scale; };
   auto Y = [&](double y) { return oy + h - (y - box.y0) * scale; };  // CAD Y points up, SVG Y down
   out << "<g>\n<text x=\"" << num(ox) << "\" y=\"" << num(oy - 8) << "\" font-size=\"14\" font-weight=\"bold\">"
-      << escape(heading) << " — " << num(travel_mm / 1000.0) << " m travel, " << gcode::format_number(time_s / 60.0, 2)
+      << xml_escape(heading) << " — " << num(travel_mm / 1000.0) << " m travel, " << gcode::format_number(time_s / 60.0, 2)
       << " min</text>\n";
   out << "<rect x=\"" << num(ox) << "\" y=\"" << num(oy) << "\" width=\"" << num((box.x1 - box.x0) * scale)
       << "\" height=\"" << num(h) << "\" fill=\"#fafafa\" stroke=\"#cccccc\"/>\n";
@@ -80,15 +67,23 @@ void panel(std::ostringstream& out, const aco::HoleSet& holes, const PlanResult&
     }
     out << "</g>\n";
   }
+  // Program zero, where the machinist sets the work offset: a crosshair.
+  const double zx = X(0.0), zy = Y(0.0);
+  out << "<g stroke=\"#C00000\" stroke-width=\"1.5\" fill=\"none\"><rect x=\"" << num(zx - 6) << "\" y=\"" << num(zy - 6)
+      << "\" width=\"12\" height=\"12\" transform=\"rotate(45 " << num(zx) << " " << num(zy) << ")\"/><line x1=\"" << num(zx - 12) << "\" y1=\"" << num(zy) << "\" x2=\"" << num(zx + 12) << "\" y2=\""
+      << num(zy) << "\"/><line x1=\"" << num(zx) << "\" y1=\"" << num(zy - 12) << "\" x2=\"" << num(zx) << "\" y2=\""
+      << num(zy + 12) << "\"/></g>\n<text x=\"" << num(zx + 10) << "\" y=\"" << num(zy + 16)
+      << "\" font-size=\"11\" fill=\"#C00000\">X0 Y0 (" << xml_escape(to_string(placement.origin)) << ")</text>\n";
   out << "<rect x=\"" << num(X(home.x) - 5) << "\" y=\"" << num(Y(home.y) - 5)
       << "\" width=\"10\" height=\"10\" fill=\"#000000\"/>\n<text x=\"" << num(X(home.x) + 8) << "\" y=\""
       << num(Y(home.y) + 4) << "\" font-size=\"11\">start</text>\n</g>\n";
 }
 
 std::string document(const aco::HoleSet& holes, const PlanResult& plan, const PlanOptions& options,
-                     const std::string& title, bool compare) {
+                     const Placement& placement, const std::string& title, bool compare) {
   Box box;
   box.add(options.machine.start.x, options.machine.start.y);
+  box.add(0.0, 0.0);  // program zero
   for (const aco::Hole& h : holes) box.add(h.center.x, h.center.y, h.diameter / 2);
   const double pad = std::max({(box.x1 - box.x0) * 0.03, (box.y1 - box.y0) * 0.03, 1.0});
   box.x0 -= pad;
@@ -98,14 +93,14 @@ std::string document(const aco::HoleSet& holes, const PlanResult& plan, const Pl
   // Each panel about 700 px on its longer side.
   const double scale = 700.0 / std::max(box.x1 - box.x0, box.y1 - box.y0);
   const double pw = (box.x1 - box.x0) * scale, ph = (box.y1 - box.y0) * scale;
-  const double margin = 30, legend_h = 40 + 18.0 * static_cast<double>(plan.groups.size() + 2);
+  const double margin = 30, legend_h = 40 + 18.0 * static_cast<double>(plan.groups.size() + 3);
   const double width = margin * 2 + (compare ? pw * 2 + margin : pw);
   const double height = margin * 2 + ph + legend_h + 20;
   std::ostringstream out;
   out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
       << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << num(width) << "\" height=\"" << num(height)
       << "\" viewBox=\"0 0 " << num(width) << " " << num(height) << "\" font-family=\"sans-serif\">\n"
-      << "<title>" << escape(title) << "</title>\n<defs>\n";
+      << "<title>" << xml_escape(title) << "</title>\n<defs>\n";
   for (int c = 0; c < 8; ++c) {
     out << "<marker id=\"arrow" << c << "\" viewBox=\"0 0 10 10\" refX=\"5\" refY=\"5\" markerWidth=\"5\" "
         << "markerHeight=\"5\" orient=\"auto\"><path d=\"M0,1 L10,5 L0,9 z\" fill=\"" << kPalette[c] << "\"/></marker>\n";
@@ -119,12 +114,12 @@ std::string document(const aco::HoleSet& holes, const PlanResult& plan, const Pl
   const double top = margin + 10;
   if (compare) {
     panel(out, holes, plan, options, input, box, scale, margin, top, "input order", plan.input_order.travel_mm,
-          plan.input_order.time_s);
+          plan.input_order.time_s, placement);
     panel(out, holes, plan, options, optimized, box, scale, margin * 2 + pw, top, "optimized",
-          plan.optimized.travel_mm, plan.optimized.time_s);
+          plan.optimized.travel_mm, plan.optimized.time_s, placement);
   } else {
     panel(out, holes, plan, options, optimized, box, scale, margin, top, title, plan.optimized.travel_mm,
-          plan.optimized.time_s);
+          plan.optimized.time_s, placement);
   }
   // Legend.
   double y = top + ph + 30;
@@ -148,20 +143,25 @@ std::string document(const aco::HoleSet& holes, const PlanResult& plan, const Pl
       << " % less than input order)</text>\n";
   out << "<text x=\"" << num(margin) << "\" y=\"" << num(y + 22) << "\">machining time: "
       << gcode::format_number(plan.optimized.time_s / 60.0, 2) << " min, " << gcode::format_number(saved_min, 2)
-      << " min saved against the input order</text>\n</g>\n</svg>\n";
+      << " min saved against the input order</text>\n";
+  const Extent& e = placement.extent;
+  out << "<text x=\"" << num(margin) << "\" y=\"" << num(y + 40) << "\">program zero: "
+      << xml_escape(describe(placement.origin)) << " (drawing X" << num(placement.zero.x) << " Y" << num(placement.zero.y)
+      << " mm); holes X" << num(e.x_min) << ".." << num(e.x_max) << " Y" << num(e.y_min) << ".." << num(e.y_max)
+      << " mm</text>\n</g>\n</svg>\n";
   return out.str();
 }
 
 }  // namespace
 
 std::string route_svg(const aco::HoleSet& holes, const PlanResult& plan, const PlanOptions& options,
-                      const std::string& title) {
-  return document(holes, plan, options, title, false);
+                      const Placement& placement, const std::string& title) {
+  return document(holes, plan, options, placement, title, false);
 }
 
 std::string compare_svg(const aco::HoleSet& holes, const PlanResult& plan, const PlanOptions& options,
-                        const std::string& title) {
-  return document(holes, plan, options, title, true);
+                        const Placement& placement, const std::string& title) {
+  return document(holes, plan, options, placement, title, true);
 }
 
 }  // namespace app

@@ -67,7 +67,7 @@ std::string upper_comment(std::string text) {
     else if (static_cast<unsigned char>(ch) >= 128) ch = '?';
     else ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
   }
-  if (text.size() > 60) text.resize(60);
+  if (text.size() > 100) text.resize(100);
   return text;
 }
 

@@ -6,6 +6,7 @@
  */
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "aco/geometry.h"
@@ -25,8 +26,14 @@ struct Machine {
   bool linear_rapids = false;        // HAAS G00 moves each axis at its own rate ("dogleg")
   double tool_change_s = 4.2;        // chip to chip
   int max_rpm = 8100;                // spindle limit; generated tools stay under it
-  aco::Point2 start{0.0, 0.0};       // where the spindle is at the start and returns to (work XY)
-  double x_min = -762.0, x_max = 762.0, y_min = -406.0, y_max = 406.0;  // reachable work XY
+  aco::Point2 start{0.0, 0.0};       // where the spindle is at the start and returns to (program XY)
+  // The table's travel in machine coordinates (VF-2: 30 x 16 in). Without a
+  // work offset only its size is known to matter: the machinist sets program
+  // zero (G54) where the part is clamped, so only the holes' extent is checked.
+  double x_min = 0.0, x_max = 762.0, y_min = 0.0, y_max = 406.0;
+  // Where program zero (G54) sits in machine coordinates, when the profile
+  // says; then every hole's absolute position is checked against the travel.
+  std::optional<aco::Point2> work_offset;
   // Clamps and fixtures sticking up above the R plane (work XY rectangles):
   // a move across one retracts to the initial plane first; a hole in one is an error.
   struct Rect {
@@ -62,6 +69,42 @@ ToolTable generate_tool_table(const aco::HoleSet& holes, Material material, doub
 
 enum class Objective { Distance, Time };
 
+// Where program zero sits on the part (--origin): the drawing's own zero, a
+// corner or the centre of the holes' bounding box, or a point of the drawing.
+enum class OriginKind { Drawing, LowerLeft, Center, UpperLeft, Point };
+struct Origin {
+  OriginKind kind = OriginKind::LowerLeft;
+  aco::Point2 point;  // OriginKind::Point: in input coordinates, mm
+};
+// "drawing", "lower-left", "center" (or "centre"), "upper-left" or "X,Y" in mm.
+std::optional<Origin> origin_from_string(const std::string& text);
+std::string to_string(const Origin& origin);      // as the option is written: "lower-left", "12.500,-3.000"
+std::string describe(const Origin& origin);       // for the operator: "LOWER-LEFT OF HOLES"
+
+// The bounding box of the hole centres.
+struct Extent {
+  double x_min = 0.0, x_max = 0.0, y_min = 0.0, y_max = 0.0;
+  double width() const { return x_max - x_min; }
+  double height() const { return y_max - y_min; }
+};
+Extent extent_of(const aco::HoleSet& holes);
+
+// Where the holes were put: program zero in the input's coordinates and the
+// hole centres' extent in program coordinates.
+struct Placement {
+  Origin origin;
+  aco::Point2 zero;  // program X0 Y0, in input coordinates (mm)
+  Extent extent;     // program coordinates (mm)
+};
+// Moves the holes so that the origin's point becomes X0 Y0.
+Placement place_holes(aco::HoleSet& holes, const Origin& origin);
+
+// The program header comment that records program zero in the input's
+// coordinates ("PROGRAM ZERO AT DRAWING X21.100 Y25.500 MM"), and its reader:
+// `verify --holes` moves the input holes by what the program states.
+std::string zero_comment(const Placement& placement);
+std::optional<aco::Point2> stated_zero(std::string_view program);
+
 struct PlanOptions {
   aco::Params solver;
   Objective objective = Objective::Distance;
@@ -83,6 +126,7 @@ struct ToolGroup {
 struct RouteStats {
   double travel_mm = 0.0;   // XY, start → every hole of every tool → start
   double time_s = 0.0;      // machining time estimate
+  std::vector<double> tool_time_s;  // per tool group: its tool change, moves and cycles (the return home is in none)
 };
 
 struct PlanResult {
@@ -94,8 +138,14 @@ struct PlanResult {
   aco::Params solver;       // with defaults resolved
 };
 
-// Groups the holes by tool and orders every group. Throws UserError (file
-// `source`) for a hole no tool fits or one outside the machine's travel.
+// Checks that the holes (in program coordinates) fit the machine: their
+// extent, tool edges included, against the size of its travel; absolute
+// positions too when the profile gives the work offset. Throws UserError.
+void check_travel(const aco::HoleSet& holes, const Machine& machine, const std::string& source);
+
+// Groups the holes (in program coordinates) by tool and orders every group.
+// Throws UserError (file `source`) for a hole no tool fits, one under a clamp
+// or holes that do not fit the machine's travel (check_travel).
 PlanResult plan_job(const aco::HoleSet& holes, const PlanOptions& options, const std::string& source);
 
 // The drilling passes of a plan, ready for gcode::write_program (with the

@@ -7,9 +7,12 @@
 
 namespace app {
 
+// What the outputs say about the job besides the plan itself.
 struct ReportContext {
   std::string source;   // input file
   std::string program;  // output program
+  Placement placement;  // where program zero sits
+  std::string name;     // job name: the input's stem or its own name
 };
 
 std::string report_json(const aco::HoleSet& holes, const PlanResult& plan, const ReportContext& context);

@@ -7,11 +7,11 @@
 
 namespace app {
 
-// The optimized route.
+// The optimized route, in program coordinates, with program zero marked.
 std::string route_svg(const aco::HoleSet& holes, const PlanResult& plan, const PlanOptions& options,
-                      const std::string& title);
+                      const Placement& placement, const std::string& title);
 // Input order and optimized order side by side.
 std::string compare_svg(const aco::HoleSet& holes, const PlanResult& plan, const PlanOptions& options,
-                        const std::string& title);
+                        const Placement& placement, const std::string& title);
 
 }  // namespace app

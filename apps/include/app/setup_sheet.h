@@ -1,0 +1,16 @@
+#pragma once
+// The setup sheet (--setup-sheet): one self-contained printable HTML page for
+// the operator — where to set program zero, which tools to load, how long the
+// job takes. Inline CSS and SVG only: no scripts, no network, no date, so the
+// same plan gives the same page.
+#include <string>
+
+#include "app/plan.h"
+#include "app/report.h"
+
+namespace app {
+
+std::string setup_sheet_html(const aco::HoleSet& holes, const PlanResult& plan, const PlanOptions& options,
+                             const ReportContext& context);
+
+}  // namespace app
