@@ -9,7 +9,8 @@
 #include <set>
 
 #include "app/errors.h"
-#include "app/excellon.h"
+#include "formats/readers.h"
+#include "formats/writers.h"
 #include "app/inputs.h"
 #include "test_util.h"
 
@@ -51,7 +52,7 @@ std::string diff(std::vector<Hit> got, std::vector<Hit> want, double tol, double
 }
 
 app::LoadedHoles parse(const std::string& text, app::InputOptions o = {}) {
-  return app::parse_excellon("t.drl", text, o);
+  return formats::parse_excellon("t.drl", text, o);
 }
 
 std::string error_of(const std::string& text) {
@@ -145,7 +146,7 @@ TEST(excellon_test, units_before_the_header_and_no_header_at_all) {
   auto orcad = parse("%\nT1C0.028F200S100\nX002250Y002300\nM30\n");
   ASSERT_EQ(orcad.holes.size(), 1u);
   EXPECT_NEAR(orcad.holes[0].diameter, 0.7112, 1e-9);
-  EXPECT_TRUE(app::looks_like_excellon("%\nT1C0.028F200S100\nX002250Y002300\n"));
+  EXPECT_TRUE(formats::looks_like_excellon("%\nT1C0.028F200S100\nX002250Y002300\n"));
 }
 
 TEST(excellon_test, slots_and_routes_are_not_hits_and_are_reported) {

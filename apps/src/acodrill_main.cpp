@@ -15,7 +15,7 @@
 #include "aco/solve.h"
 #include "app/bench.h"
 #include "app/errors.h"
-#include "app/excellon.h"
+#include "formats/writers.h"
 #include "app/files.h"
 #include "app/inputs.h"
 #include "app/plan.h"
@@ -110,7 +110,7 @@ app::InputOptions to_input_options(const InputArgs& a) {
 
 void print_warnings(const app::LoadedHoles& loaded, const std::string& path, bool quiet) {
   if (quiet) return;
-  std::string summary = std::to_string(loaded.holes.size()) + " holes from " + std::string(app::to_string(loaded.format));
+  std::string summary = std::to_string(loaded.holes.size()) + " holes from " + std::string(formats::to_string(loaded.format));
   if (loaded.duplicates_removed) summary += ", " + std::to_string(loaded.duplicates_removed) + " duplicates removed";
   if (loaded.skipped_by_filter) summary += ", " + std::to_string(loaded.skipped_by_filter) + " filtered out";
   std::size_t warnings = 0;
@@ -253,7 +253,7 @@ int cmd_plan(const PlanArgs& a, const SolverArgs& s, const InputArgs& in_args) {
     for (gcode::ToolPass& p : in_input) {
       for (aco::Point2& h : p.holes) h = {h.x + placement.zero.x, h.y + placement.zero.y};
     }
-    app::write_file_atomic(a.excellon, app::write_excellon(in_input, metric, source_name));
+    app::write_file_atomic(a.excellon, formats::write_excellon(in_input, metric, source_name));
   }
 
   if (!a.quiet) {

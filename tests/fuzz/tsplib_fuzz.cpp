@@ -1,5 +1,6 @@
 #include "app/errors.h"
-#include "app/excellon.h"
+#include "formats/readers.h"
+#include "formats/writers.h"
 #include "app/inputs.h"
 #include "fuzz_targets.h"
 
@@ -8,7 +9,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   app::InputOptions options;
   options.dxf.max_holes = 100000;
   try {
-    app::parse_tsplib("fuzz", input);
+    formats::parse_tsplib("fuzz", input);
   } catch (const app::UserError&) {
   }
   return 0;

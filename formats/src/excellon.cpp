@@ -7,7 +7,7 @@
 // against its decimal digits. The format is 2:4 for inch and 3:3 for metric
 // unless a header says otherwise (";FILE_FORMAT=2:4", ";FORMAT={3:3/...}",
 // "METRIC,TZ,000.000"); the last statement wins.
-#include "app/excellon.h"
+#include "formats/readers.h"
 
 #include <charconv>
 #include <cmath>
@@ -16,14 +16,11 @@
 #include <cstring>
 #include <map>
 #include <optional>
-#include <sstream>
 
 #include "aco/hole_set.h"
-#include "app/errors.h"
-#include "gcode/program.h"
 #include "text.h"
 
-namespace app {
+namespace formats {
 
 namespace {
 
@@ -46,7 +43,7 @@ class Reader {
   LoadedHoles run(std::string_view data);
 
  private:
-  [[noreturn]] void fail(const std::string& what) const { throw UserError(path_, line_, what); }
+  [[noreturn]] void fail(const std::string& what) const { throw InputError(path_, line_, what); }
   void header_line(std::string_view s);
   void body_line(std::string_view s);
   void define_tool(std::string_view s);
@@ -188,9 +185,7 @@ void Reader::hit(double x, double y) {
   h.layer = "T" + std::to_string(tool_);
   h.source_line = line_;
   out_.holes.push_back(std::move(h));
-  if (out_.holes.size() > options_.dxf.max_holes) {
-    fail("more than " + std::to_string(options_.dxf.max_holes) + " holes (the hole limit, --max-holes)");
-  }
+  check_limit(path_, line_, out_.holes.size(), options_.dxf.max_holes);
 }
 
 void Reader::body_line(std::string_view s) {
@@ -384,34 +379,10 @@ LoadedHoles parse_excellon(const std::string& path, std::string_view data, const
     std::size_t at = data.find("%FS");
     if (at == std::string_view::npos) at = data.find("%MO");
     const auto line = static_cast<std::uint32_t>(1 + std::count(data.begin(), data.begin() + static_cast<long>(std::min(at, data.size())), '\n'));
-    throw UserError(path, line, "RS-274X Gerber drill data is not supported; export the drill file as Excellon");
+    throw InputError(path, line, "RS-274X Gerber drill data is not supported; export the drill file as Excellon");
   }
   Reader reader(path, options);
   return reader.run(data);
 }
 
-std::string write_excellon(const std::vector<gcode::ToolPass>& passes, bool metric, const std::string& source) {
-  // Explicit decimal points: every reader agrees on them, whatever it assumes about zeros.
-  const int decimals = metric ? 3 : 4;
-  const double scale = metric ? 1.0 : 1.0 / kInch;
-  std::ostringstream out;
-  out << "M48\n";
-  out << ";FILE_FORMAT=" << (metric ? "3:3" : "2:4") << "\n";
-  out << ";DRILL ORDER OPTIMIZED BY ACODRILL FROM " << source << "\n";
-  out << (metric ? "METRIC,TZ" : "INCH,TZ") << "\n";
-  for (const auto& p : passes) {
-    out << "T" << p.tool.number << "C" << gcode::format_number(p.tool.diameter_mm * scale, decimals) << "\n";
-  }
-  out << "%\nG90\nG05\n";
-  for (const auto& p : passes) {
-    out << "T" << p.tool.number << "\n";
-    for (const aco::Point2& h : p.holes) {
-      out << "X" << gcode::format_number(h.x * scale, decimals) << "Y" << gcode::format_number(h.y * scale, decimals)
-          << "\n";
-    }
-  }
-  out << "T0\nM30\n";
-  return out.str();
-}
-
-}  // namespace app
+}  // namespace formats

@@ -1,0 +1,19 @@
+#pragma once
+// The individual readers behind formats::parse_holes, for tests and fuzzers.
+// Each takes the file's name (for messages) and bytes, and returns its holes
+// in mm before filters and duplicate removal.
+#include <string>
+#include <string_view>
+
+#include "formats/holes.h"
+
+namespace formats {
+
+LoadedHoles parse_csv(const std::string& path, std::string_view data, const InputOptions& options);
+LoadedHoles parse_tsplib(const std::string& path, std::string_view data);
+LoadedHoles parse_xml_map(const std::string& path, std::string_view data, const InputOptions& options);
+
+bool looks_like_excellon(std::string_view head);
+LoadedHoles parse_excellon(const std::string& path, std::string_view data, const InputOptions& options);
+
+}  // namespace formats
