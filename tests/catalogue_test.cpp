@@ -150,6 +150,12 @@ std::vector<BadCase> catalogue() {
       {"part_fits_only_turned", "a.csv", "x,y,d\n0,0,2\n0,600,2\n", plan, "turned by 90 degrees the part would fit"},
       {"outside_travel_at_work_offset", "a.csv", "x,y,d\n0,0,2\n100,100,2\n", plan + " --machine {dir}/offset.json",
        "the holes reach machine X 699.000..801.000"},
+      // Issue 16: holes without a diameter never become a "0.000 MM DRILL".
+      {"csv_rows_without_diameter", "a.csv", "x,y\n1,1\n5,5\n", plan, "a.csv:2: hole without a diameter"},
+      {"csv_row_shorter_than_its_header", "a.csv", "x,y,d\n1,1,3\n5,5\n", plan, "a.csv:3: the row has 2 fields but the header names 3"},
+      {"tsplib_nodes_planned_without_diameter", "a.tsp", "NAME : a\nTYPE : TSP\nDIMENSION : 2\nEDGE_WEIGHT_TYPE : EUC_2D\nNODE_COORD_SECTION\n1 0 0\n2 5 5\nEOF\n",
+       plan, "a.tsp:6: hole without a diameter"},
+      {"excellon_hit_after_undefined_t0", "a.drl", "M48\nMETRIC\nT1C0.6\n%\nT0\nX1.0Y1.0\nM30\n", plan, "a.drl:6: drill hit with no tool loaded (T0)"},
       {"unknown_origin", "a.csv", kGoodCsv, plan + " --origin bottom", "--origin must be"},
       {"origin_point_not_a_number", "a.csv", kGoodCsv, plan + " --origin 1,abc", "--origin must be"},
       {"bad_machine_profile", "a.csv", kGoodCsv, plan + " --machine {dir}/tools_ok.json", "a machine profile is a JSON object"},

@@ -262,3 +262,22 @@ TEST(cli_test, route_pictures_are_well_formed_and_render) {
   EXPECT_EQ(xml.code, 0) << xml.err;
   EXPECT_EQ(acodrill_run("verify " + q(t / "x.nc") + " --holes " + q(testutil::source_dir() + "/samples/circular21.xml") + " -q").code, 0);
 }
+
+// Issue 16: holes that come without a size get the one the user gives, or a
+// tool table's; the program never names a 0 mm drill.
+TEST(cli_test, holes_without_a_diameter_take_the_default_or_the_tool_table) {
+  TempDir t;
+  testutil::spit(t / "a.csv", "x,y\n1,1\n5,5\n9,1\n");
+  auto r = acodrill_run("plan " + q(t / "a.csv") + " -o " + q(t / "a.nc") + " -q --default-diameter 3.2");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::string prog = slurp(t / "a.nc");
+  EXPECT_THAT(prog, ::testing::HasSubstr("(T1 D=3.200 MM - 3.200 MM DRILL - 3 HOLES)"));
+  EXPECT_EQ(prog.find("0.000 MM DRILL"), std::string::npos);
+  testutil::spit(t / "tools.json", R"({"tools": [{"number": 7, "diameter_mm": 2.5, "min_hole_mm": 0, "max_hole_mm": 2.6}]})");
+  auto tt = acodrill_run("plan " + q(t / "a.csv") + " -o " + q(t / "b.nc") + " -q --tools " + q(t / "tools.json"));
+  ASSERT_EQ(tt.code, 0) << tt.err;
+  EXPECT_THAT(slurp(t / "b.nc"), ::testing::HasSubstr("T7 M06"));
+  auto none = acodrill_run("plan " + q(t / "a.csv") + " -o " + q(t / "c.nc") + " -q");
+  EXPECT_EQ(none.code, 2);
+  EXPECT_THAT(none.err, ::testing::HasSubstr("a.csv:2: hole without a diameter"));
+}

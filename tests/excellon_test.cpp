@@ -212,3 +212,16 @@ TEST(excellon_test, kicad_writer_on_real_boards_gives_the_boards_holes) {
   }
   EXPECT_GE(files, 16);
 }
+
+// Issue 16: a header that defines T0 makes T0 a tool (gerbv and the EDA tool
+// that wrote it read these hits); only an undefined T0 unloads the spindle.
+TEST(excellon_test, a_tool_zero_defined_in_the_header_drills) {
+  auto in = parse("M48\nMETRIC\nT0C0.006\nT1C0.8\n%\nT0\nX1.0Y2.0\nX3.0Y4.0\nT1\nX5.0Y6.0\nT0\nM30\n");
+  ASSERT_EQ(in.holes.size(), 3u);
+  EXPECT_DOUBLE_EQ(in.holes[0].diameter, 0.006);
+  EXPECT_EQ(in.holes[0].layer, "T0");
+  EXPECT_DOUBLE_EQ(in.holes[1].center.y, 4.0);
+  EXPECT_DOUBLE_EQ(in.holes[2].diameter, 0.8);
+  EXPECT_EQ(error_of("M48\nMETRIC\nT1C0.8\n%\nT1\nX5.0Y6.0\nT0\nX1.0Y1.0\nM30\n"),
+            "t.drl:8: drill hit with no tool loaded (T0)");
+}

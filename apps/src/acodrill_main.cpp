@@ -157,7 +157,7 @@ int cmd_holes(const std::string& input, const InputArgs& in_args, const std::str
 struct PlanArgs {
   std::string input, output, report, svg, svg_compare, convergence, excellon, setup_sheet;
   std::string dialect = "haas", units, tools, machine, material, objective = "distance", origin = "lower-left";
-  std::optional<double> thickness;
+  std::optional<double> thickness, default_diameter;
   std::size_t resume_from = 1;
   int program_number = 1001;
   bool quiet = false;
@@ -208,6 +208,7 @@ int cmd_plan(const PlanArgs& a, const SolverArgs& s, const InputArgs& in_args) {
   const std::string source = a.input == "-" ? "<stdin>" : a.input;
   const std::string source_name = source.substr(source.find_last_of('/') == std::string::npos ? 0 : source.find_last_of('/') + 1);
   // Program zero where the machinist will set the work offset.
+  if (a.default_diameter) app::fill_missing_diameters(loaded.holes, *a.default_diameter);
   const app::Placement placement = app::place_holes(loaded.holes, origin);
   app::PlanResult plan = app::plan_job(loaded.holes, o, source);
   if (progress) std::fprintf(stderr, "\r%60s\r", "");
@@ -415,6 +416,9 @@ int main(int argc, char** argv) {
   plan_cmd->add_option("--machine", plan.machine, "Machine profile (JSON); default: HAAS VF-2 class");
   plan_cmd->add_option("--material", plan.material, "steel | aluminium | pcb: feeds and speeds of generated tools (default steel; pcb for Excellon input)");
   plan_cmd->add_option("--thickness", plan.thickness, "Part thickness in mm for generated tools (default 6.35, or 1.6 for pcb)");
+  plan_cmd->add_option("--default-diameter", plan.default_diameter,
+                       "Diameter in mm of holes the input gives none (CSV rows without one, TSPLIB nodes)")
+      ->check(CLI::Range(1e-6, 1e4));
   plan_cmd->add_option("--objective", plan.objective, "distance (default) | time: minimise travel or rapid time");
   plan_cmd->add_option("--resume-from", plan.resume_from, "Drill holes N, N+1, ... of the same order (default 1)")
       ->check(CLI::Range(std::size_t{1}, std::size_t{100'000'000}));

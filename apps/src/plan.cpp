@@ -286,6 +286,17 @@ std::optional<aco::Point2> stated_zero(std::string_view program) {
   return aco::Point2{x, y};
 }
 
+std::size_t fill_missing_diameters(aco::HoleSet& holes, double diameter_mm) {
+  std::size_t filled = 0;
+  for (aco::Hole& h : holes) {
+    if (!(h.diameter > 0)) {
+      h.diameter = diameter_mm;
+      ++filled;
+    }
+  }
+  return filled;
+}
+
 void check_travel(const aco::HoleSet& holes, const Machine& m, const std::string& source) {
   if (holes.empty()) return;
   // The part's envelope: hole centres widened by each hole's radius (the tool's edge).
@@ -416,6 +427,18 @@ RouteStats route_stats(const aco::HoleSet& holes, const std::vector<ToolGroup>& 
 
 PlanResult plan_job(const aco::HoleSet& holes, const PlanOptions& options, const std::string& source) {
   const Machine& m = options.machine;
+  // A hole without a diameter would become a "0.000 MM DRILL": the user says
+  // which drill (--default-diameter), or a tool table has a tool that takes it.
+  const bool table_takes_zero =
+      options.tools && std::any_of(options.tools->entries.begin(), options.tools->entries.end(),
+                                   [](const ToolTableEntry& e) { return e.min_hole_mm <= 1e-9; });
+  for (const aco::Hole& h : holes) {
+    if (!(h.diameter > 0) && !table_takes_zero) {
+      throw UserError(source, h.source_line,
+                      "hole without a diameter; give one with --default-diameter MM, or a --tools table "
+                      "with a tool whose min_hole_mm is 0");
+    }
+  }
   check_travel(holes, m, source);
   for (const aco::Hole& h : holes) {
     for (const Machine::Rect& r : m.clamps) {

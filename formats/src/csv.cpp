@@ -13,6 +13,7 @@ LoadedHoles parse_csv(const std::string& path, std::string_view data, const Inpu
   out.name = stem(path);
   const double unit = options.default_unit_mm;
   bool first_data = true;
+  std::size_t header_fields = 0;  // 0: no header
   for_each_line(data, [&](std::uint32_t no, std::string_view line) {
     std::string_view t = trim(line);
     if (t.empty() || t.front() == '#') return true;
@@ -32,11 +33,17 @@ LoadedHoles parse_csv(const std::string& path, std::string_view data, const Inpu
       // A header is a first line whose first two cells are both words, not numbers.
       if (first_data && out.holes.empty() && !x_ok && cells.size() >= 2 && !parse_number(cells[1], y)) {
         first_data = false;
+        header_fields = cells.size();
         return true;
       }
       throw InputError(path, no, "expected x,y[,diameter[,layer]] numbers, found \"" + std::string(t.substr(0, 60)) + "\"");
     }
     first_data = false;
+    // A row shorter than its header has lost a field (most often the diameter).
+    if (cells.size() < header_fields) {
+      throw InputError(path, no, "the row has " + std::to_string(cells.size()) + " fields but the header names " +
+                                     std::to_string(header_fields));
+    }
     if (cells.size() >= 3 && !cells[2].empty() && !parse_number(cells[2], d)) {
       throw InputError(path, no, "diameter \"" + std::string(cells[2]) + "\" is not a number");
     }

@@ -175,8 +175,10 @@ double Reader::coordinate(std::string_view text) const {
 
 void Reader::hit(double x, double y) {
   if (tool_ < 0) fail("drill hit before any tool is selected");
-  if (tool_ == 0) fail("drill hit with no tool loaded (T0)");
   auto t = tools_.find(tool_);
+  // T0 unloads the spindle, unless the header defined a tool 0 (some EDA
+  // tools number from 0; gerbv and they read those hits).
+  if (tool_ == 0 && t == tools_.end()) fail("drill hit with no tool loaded (T0)");
   if (t == tools_.end()) fail("tool T" + std::to_string(tool_) + " is not defined");
   aco::Hole h;
   const double u = unit_mm();

@@ -138,13 +138,18 @@ struct PlanResult {
   aco::Params solver;       // with defaults resolved
 };
 
+// Gives every hole without a diameter (0: a CSV row without one, a TSPLIB
+// node) the one the user chose (--default-diameter); returns how many.
+std::size_t fill_missing_diameters(aco::HoleSet& holes, double diameter_mm);
+
 // Checks that the holes (in program coordinates) fit the machine: their
 // extent, tool edges included, against the size of its travel; absolute
 // positions too when the profile gives the work offset. Throws UserError.
 void check_travel(const aco::HoleSet& holes, const Machine& machine, const std::string& source);
 
 // Groups the holes (in program coordinates) by tool and orders every group.
-// Throws UserError (file `source`) for a hole no tool fits, one under a clamp
+// Throws UserError (file `source`) for a hole without a diameter that no tool
+// of the table takes, a hole no tool fits, one under a clamp
 // or holes that do not fit the machine's travel (check_travel).
 PlanResult plan_job(const aco::HoleSet& holes, const PlanOptions& options, const std::string& source);
 
