@@ -281,3 +281,43 @@ TEST(cli_test, holes_without_a_diameter_take_the_default_or_the_tool_table) {
   EXPECT_EQ(none.code, 2);
   EXPECT_THAT(none.err, ::testing::HasSubstr("a.csv:2: hole without a diameter"));
 }
+
+// Issue 16: one slot policy for every format. Drilled, a slot's holes stay
+// together and in their order (ends first) whatever the colony does with the
+// rest; skipped, the slot is named in the program, the report and the sheet.
+TEST(cli_test, slots_are_drilled_in_their_order_or_named_where_skipped) {
+  TempDir t;
+  testutil::spit(t / "s.drl", "M48\nMETRIC\nT1C1.0\n%\nT1\nX5.0Y5.0\nX0.0Y0.0G85X2.0Y0.0\nX10.0Y0.0\nX1.0Y8.0\nM30\n");
+  auto r = acodrill_run("plan " + q(t / "s.drl") + " -o " + q(t / "d.nc") + " -q --origin drawing --dialect linuxcnc");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::string prog = slurp(t / "d.nc");
+  EXPECT_THAT(prog, ::testing::HasSubstr("(SLOTS: 1 DRILLED AS 9 HOLES)"));
+  gcode::Interpretation run = gcode::interpret(prog);
+  ASSERT_EQ(run.holes.size(), 12u);
+  std::vector<double> slot_x;
+  std::size_t first = run.holes.size();
+  for (std::size_t i = 0; i < run.holes.size(); ++i) {
+    if (std::fabs(run.holes[i].y_mm) < 1e-9 && run.holes[i].x_mm <= 2.0 + 1e-9) {
+      if (first == run.holes.size()) first = i;
+      EXPECT_EQ(i, first + slot_x.size()) << "the slot's holes are drilled one after another";
+      slot_x.push_back(run.holes[i].x_mm);
+    }
+  }
+  ASSERT_EQ(slot_x.size(), 9u);
+  const std::vector<double> bisection = {0.0, 2.0, 1.0, 0.5, 1.5, 0.25, 0.75, 1.25, 1.75};
+  EXPECT_TRUE(slot_x == bisection) << "ends first, then midpoints";
+  EXPECT_EQ(acodrill_run("verify " + q(t / "d.nc") + " --holes " + q(t / "s.drl") + " -q").code, 0);
+
+  auto s = acodrill_run("plan " + q(t / "s.drl") + " -o " + q(t / "s.nc") + " -q --slots skip --report " + q(t / "r.json") +
+                        " --setup-sheet " + q(t / "s.html"));
+  ASSERT_EQ(s.code, 0) << s.err;
+  EXPECT_EQ(s.err, "") << "quiet";
+  EXPECT_THAT(slurp(t / "s.nc"), ::testing::HasSubstr("(NOT DRILLED: LINE 7: SLOT 1.000 MM WIDE FROM X0.000 Y0.000 TO X2.000 Y0.000 MM, --SLOTS SKIP)"));
+  EXPECT_EQ(gcode::interpret(slurp(t / "s.nc")).holes.size(), 3u);
+  auto report = nlohmann::json::parse(slurp(t / "r.json"));
+  ASSERT_EQ(report["not_drilled"].size(), 1u);
+  EXPECT_EQ(report["not_drilled"][0]["line"].get<int>(), 7);
+  EXPECT_THAT(slurp(t / "s.html"), ::testing::HasSubstr("<b>Not drilled</b>: line 7: slot 1.000 mm wide"));
+  auto noisy = acodrill_run("plan " + q(t / "s.drl") + " -o " + q(t / "n.nc") + " --slots skip");
+  EXPECT_THAT(noisy.err, ::testing::HasSubstr("NOT DRILLED: 1 feature(s), first: line 7: slot"));
+}

@@ -64,6 +64,13 @@ std::string error_of(const std::string& text) {
   return "no error";
 }
 
+// The hits alone: slots (G85, routed ovals) skipped, as the oracles list hits.
+app::InputOptions hits_only() {
+  app::InputOptions o;
+  o.slots.policy = formats::SlotPolicy::Skip;
+  return o;
+}
+
 std::vector<std::string> fixtures() {
   std::vector<std::string> out;
   for (const auto& e : std::filesystem::directory_iterator(data("real-excellon"))) {
@@ -79,7 +86,7 @@ class ExcellonFixture : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(ExcellonFixture, every_hit_with_its_tool_diameter) {
   const std::string path = GetParam();
-  app::LoadedHoles got = app::load_holes(path, {});
+  app::LoadedHoles got = app::load_holes(path, hits_only());
   EXPECT_EQ(got.format, app::InputFormat::Excellon) << "chosen by content";
   std::vector<Hit> want = hits_csv(slurp(path + ".hits.csv"));
   std::vector<Hit> mine;
@@ -149,12 +156,68 @@ TEST(excellon_test, units_before_the_header_and_no_header_at_all) {
   EXPECT_TRUE(formats::looks_like_excellon("%\nT1C0.028F200S100\nX002250Y002300\n"));
 }
 
-TEST(excellon_test, slots_and_routes_are_not_hits_and_are_reported) {
-  auto r = parse("M48\nINCH,TZ\nT1C0.5\n%\nT1\nX0Y0G85X5000Y0\nG00X1000Y1000\nM15\nG01X2000\nM16\nG05\nX3000Y3000\nM30\n");
+TEST(excellon_test, slots_and_routes_are_read_as_slots_or_named_as_not_drilled) {
+  // A G85 canned slot, a routed oval (plunge, one straight move, retract: how
+  // KiCad writes oval pads), a routed oval cut back and forth (Mentor), a
+  // routed corner (routing, not drilling), then a hit.
+  auto r = parse("M48\nINCH,TZ\nT1C0.5\n%\nT1\nX0Y0G85X5000Y0\nG00X1000Y1000\nM15\nG01X2000\nM16\nG05\n"
+                 "G00X1000Y3000\nM15\nG01Y2500\nY3500\nM17\nG00X0Y0\nM15\nG01X1000\nY1000\nM16\nG05\nX3000Y3000\nM30\n");
   ASSERT_EQ(r.holes.size(), 1u);
   EXPECT_NEAR(r.holes[0].center.x, 0.3 * 25.4, 1e-9);
-  ASSERT_EQ(r.warnings.size(), 1u);
-  EXPECT_THAT(r.warnings[0].message, ::testing::HasSubstr("1 G85 slot(s) and 2 routed move(s)"));
+  ASSERT_EQ(r.slots.size(), 3u);
+  const double in = 25.4;
+  EXPECT_NEAR(r.slots[0].from.x, 0.0, 1e-9);
+  EXPECT_NEAR(r.slots[0].to.x, 0.5 * in, 1e-9);
+  EXPECT_NEAR(r.slots[0].width_mm, 0.5 * in, 1e-9);
+  EXPECT_EQ(r.slots[0].source_line, 6u);
+  EXPECT_NEAR(r.slots[1].from.x, 0.1 * in, 1e-9);
+  EXPECT_NEAR(r.slots[1].to.x, 0.2 * in, 1e-9);
+  EXPECT_NEAR(r.slots[1].to.y, 0.1 * in, 1e-9);
+  EXPECT_EQ(r.slots[1].source_line, 8u);
+  EXPECT_NEAR(std::min(r.slots[2].from.y, r.slots[2].to.y), 0.25 * in, 1e-9);
+  EXPECT_NEAR(std::max(r.slots[2].from.y, r.slots[2].to.y), 0.35 * in, 1e-9);
+  ASSERT_EQ(r.skipped.size(), 1u);
+  EXPECT_EQ(r.skipped[0].line, 18u);
+  EXPECT_THAT(r.skipped[0].message, ::testing::HasSubstr("routed path of 2 moves"));
+}
+
+TEST(excellon_test, drilled_slots_are_rows_of_holes_ends_first_then_midpoints) {
+  const std::string text = "M48\nMETRIC\nT1C1.0\n%\nT1\nX0.0Y0.0G85X2.0Y0.0\nX10.0Y10.0\nM30\n";
+  app::InputOptions o;  // the default: drill, pitch a quarter of the width
+  app::LoadedHoles in = formats::parse_holes("t.drl", text, o);
+  EXPECT_EQ(in.slots_drilled, 1u);
+  ASSERT_EQ(in.slot_holes, 9u);  // 2 mm at 0.25 mm: 9 holes
+  ASSERT_EQ(in.holes.size(), 10u);
+  std::vector<double> xs;
+  for (const aco::Hole& h : in.holes) {
+    if (h.chain == 0) continue;
+    EXPECT_DOUBLE_EQ(h.diameter, 1.0);
+    EXPECT_DOUBLE_EQ(h.center.y, 0.0);
+    EXPECT_EQ(h.source_line, 6u);
+    xs.push_back(h.center.x);
+  }
+  ASSERT_EQ(xs.size(), 9u);
+  EXPECT_DOUBLE_EQ(xs[0], 0.0);
+  EXPECT_DOUBLE_EQ(xs[1], 2.0);
+  // Every later hole lies midway between two holes already drilled.
+  for (std::size_t i = 2; i < xs.size(); ++i) {
+    double left = -1e9, right = 1e9;
+    for (std::size_t j = 0; j < i; ++j) {
+      if (xs[j] < xs[i]) left = std::max(left, xs[j]);
+      if (xs[j] > xs[i]) right = std::min(right, xs[j]);
+    }
+    EXPECT_NEAR(xs[i] - left, right - xs[i], 1e-9) << "hole " << i;
+  }
+  // --slots skip: no holes, the slot named.
+  o.slots.policy = formats::SlotPolicy::Skip;
+  app::LoadedHoles skipped = formats::parse_holes("t.drl", text, o);
+  EXPECT_EQ(skipped.holes.size(), 1u);
+  ASSERT_EQ(skipped.skipped.size(), 1u);
+  EXPECT_EQ(skipped.skipped[0].line, 6u);
+  EXPECT_THAT(skipped.skipped[0].message, ::testing::HasSubstr("slot 1.000 mm wide from X0.000 Y0.000 to X2.000 Y0.000 mm"));
+  // A pitch of the user's.
+  o.slots = {formats::SlotPolicy::Drill, 1.0};
+  EXPECT_EQ(formats::parse_holes("t.drl", text, o).slot_holes, 3u);
 }
 
 TEST(excellon_test, bad_input_names_file_and_line) {
@@ -203,7 +266,8 @@ TEST(excellon_test, kicad_writer_on_real_boards_gives_the_boards_holes) {
     const std::string board = name.substr(0, name.find(name.find("-inch-") != std::string::npos ? "-inch-" : "-mm-"));
     std::vector<Hit> want = hits_csv(slurp(data("kicad/" + board + ".holes.csv")));
     std::vector<Hit> got;
-    for (const auto& h : app::load_holes(e.path().string(), {}).holes) got.push_back({h.center.x, h.center.y, h.diameter});
+    const app::LoadedHoles in = app::load_holes(e.path().string(), hits_only());
+    for (const auto& h : in.holes) got.push_back({h.center.x, h.center.y, h.diameter});
     const bool inch = name.find("-inch-") != std::string::npos;
     // Positions within half the file's last digit; diameters as KiCad rounds them in inch.
     EXPECT_EQ(diff(got, want, inch ? 0.0026 : 0.0006, 0.013), "") << name;

@@ -78,6 +78,8 @@ struct InputArgs {
   std::string input_units;
   std::size_t max_holes = 5'000'000;
   std::size_t max_expansion = 10'000'000;
+  std::string slots = "drill";
+  double slot_pitch = 0.0;
 };
 
 void add_input_options(CLI::App* cmd, InputArgs& a) {
@@ -87,6 +89,12 @@ void add_input_options(CLI::App* cmd, InputArgs& a) {
   cmd->add_option("--input-units", a.input_units, "mm | inch: units of inputs that do not say (default mm)");
   cmd->add_option("--max-holes", a.max_holes, "Refuse inputs with more holes than this (default 5000000)")
       ->check(CLI::Range(std::size_t{1}, std::size_t{100'000'000}));
+  cmd->add_option("--slots", a.slots,
+                  "drill (default): each slot (Excellon G85 or routed oval, Gerber obround) becomes a row of holes of "
+                  "its width, ends first then midpoints so the drill never cuts into one fresh hole alone; skip: "
+                  "not drilled, and named in the program header, report and setup sheet");
+  cmd->add_option("--slot-pitch", a.slot_pitch, "Distance between a drilled slot's holes in mm (default: a quarter of its width)")
+      ->check(CLI::Range(0.0, 1e4));
   cmd->add_option("--max-expansion", a.max_expansion,
                   "Refuse DXF files whose blocks expand to more references than this (default 10000000)")
       ->check(CLI::Range(std::size_t{1}, std::size_t{1'000'000'000}));
@@ -105,6 +113,10 @@ app::InputOptions to_input_options(const InputArgs& a) {
     else throw app::UserError("--input-units must be mm or inch (got \"" + a.input_units + "\")");
     o.input_units_given = true;
   }
+  if (a.slots == "drill") o.slots.policy = formats::SlotPolicy::Drill;
+  else if (a.slots == "skip") o.slots.policy = formats::SlotPolicy::Skip;
+  else throw app::UserError("--slots must be drill or skip (got \"" + a.slots + "\")");
+  o.slots.pitch_mm = a.slot_pitch;
   return o;
 }
 
@@ -113,6 +125,14 @@ void print_warnings(const app::LoadedHoles& loaded, const std::string& path, boo
   std::string summary = std::to_string(loaded.holes.size()) + " holes from " + std::string(formats::to_string(loaded.format));
   if (loaded.duplicates_removed) summary += ", " + std::to_string(loaded.duplicates_removed) + " duplicates removed";
   if (loaded.skipped_by_filter) summary += ", " + std::to_string(loaded.skipped_by_filter) + " filtered out";
+  if (loaded.slots_drilled) {
+    summary += ", " + std::to_string(loaded.slots_drilled) + " slot(s) drilled as " + std::to_string(loaded.slot_holes) + " holes";
+  }
+  if (!loaded.skipped.empty()) {
+    const app::Note& n = loaded.skipped.front();
+    summary += "; NOT DRILLED: " + std::to_string(loaded.skipped.size()) + " feature(s), first: " +
+               (n.line ? "line " + std::to_string(n.line) + ": " : "") + n.message;
+  }
   std::size_t warnings = 0;
   std::string first;
   for (const app::Note& n : loaded.warnings) {
@@ -228,6 +248,19 @@ int cmd_plan(const PlanArgs& a, const SolverArgs& s, const InputArgs& in_args) {
           std::to_string(plan.solver.seed),
       origin_comment(placement, ps.units),
       app::zero_comment(placement)};
+  if (loaded.slots_drilled) {
+    ps.header_comments.push_back("SLOTS: " + std::to_string(loaded.slots_drilled) + " DRILLED AS " +
+                                 std::to_string(loaded.slot_holes) + " HOLES");
+  }
+  // What the input asks for and this program does not do, never only on stderr.
+  constexpr std::size_t kListed = 20;
+  for (std::size_t i = 0; i < loaded.skipped.size() && i < kListed; ++i) {
+    const app::Note& n = loaded.skipped[i];
+    ps.header_comments.push_back("NOT DRILLED: " + (n.line ? "LINE " + std::to_string(n.line) + ": " : std::string()) + n.message);
+  }
+  if (loaded.skipped.size() > kListed) {
+    ps.header_comments.push_back("NOT DRILLED: " + std::to_string(loaded.skipped.size() - kListed) + " MORE (SEE THE REPORT)");
+  }
   std::ostringstream program;
   const std::vector<gcode::ToolPass> passes = app::to_passes(loaded.holes, plan, o.machine);
   try {
@@ -238,7 +271,7 @@ int cmd_plan(const PlanArgs& a, const SolverArgs& s, const InputArgs& in_args) {
 
   // Everything is computed; now write, each file complete or not at all.
   app::write_file_atomic(a.output, program.str());
-  app::ReportContext ctx{source, a.output, placement, loaded.name};
+  app::ReportContext ctx{source, a.output, placement, loaded.name, &loaded};
   if (!a.report.empty()) app::write_file_atomic(a.report, app::report_json(loaded.holes, plan, ctx));
   if (!a.convergence.empty()) app::write_file_atomic(a.convergence, app::convergence_csv(plan));
   if (!a.svg.empty()) app::write_file_atomic(a.svg, app::route_svg(loaded.holes, plan, o, placement, loaded.name));

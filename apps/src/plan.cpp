@@ -425,6 +425,64 @@ RouteStats route_stats(const aco::HoleSet& holes, const std::vector<ToolGroup>& 
   return st;
 }
 
+namespace {
+
+// A tool group's holes as the solver sees them: one point per stop, where a
+// stop is a single hole or a whole chain. Without chains, stop i is hole i.
+struct RouteUnits {
+  std::vector<aco::Point2> points;
+  std::vector<std::size_t> begin;  // stop k drills members[begin[k] .. begin[k+1])
+  aco::Order members;              // hole indices grouped by stop, chains in their own order
+
+  aco::Order expand(const aco::Order& stops) const {
+    aco::Order out;
+    out.reserve(members.size());
+    for (aco::HoleIndex k : stops) out.insert(out.end(), members.begin() + static_cast<long>(begin[k]),
+                                              members.begin() + static_cast<long>(begin[k + 1]));
+    return out;
+  }
+};
+
+RouteUnits route_units(const aco::HoleSet& holes, const aco::Order& input_order) {
+  RouteUnits u;
+  u.points.reserve(input_order.size());
+  u.begin.reserve(input_order.size() + 1);
+  const bool chains = std::any_of(input_order.begin(), input_order.end(), [&](aco::HoleIndex h) { return holes[h].chain != 0; });
+  if (!chains) {
+    for (aco::HoleIndex h : input_order) u.points.push_back(holes[h].center);
+    u.members = input_order;
+    for (std::size_t i = 0; i <= input_order.size(); ++i) u.begin.push_back(i);
+    return u;
+  }
+  // Stops in the order of their first hole; a chain's holes keep their order.
+  std::map<std::uint32_t, std::size_t> stop_of_chain;
+  std::vector<aco::Order> stops;
+  for (aco::HoleIndex h : input_order) {
+    const std::uint32_t c = holes[h].chain;
+    if (c == 0) {
+      stops.push_back({h});
+      continue;
+    }
+    auto [it, fresh] = stop_of_chain.emplace(c, stops.size());
+    if (fresh) stops.emplace_back();
+    stops[it->second].push_back(h);
+  }
+  for (const aco::Order& stop : stops) {
+    u.begin.push_back(u.members.size());
+    aco::Point2 centroid{0, 0};
+    for (aco::HoleIndex h : stop) {
+      centroid.x += holes[h].center.x;
+      centroid.y += holes[h].center.y;
+      u.members.push_back(h);
+    }
+    u.points.push_back({centroid.x / static_cast<double>(stop.size()), centroid.y / static_cast<double>(stop.size())});
+  }
+  u.begin.push_back(u.members.size());
+  return u;
+}
+
+}  // namespace
+
 PlanResult plan_job(const aco::HoleSet& holes, const PlanOptions& options, const std::string& source) {
   const Machine& m = options.machine;
   // A hole without a diameter would become a "0.000 MM DRILL": the user says
@@ -499,8 +557,10 @@ PlanResult plan_job(const aco::HoleSet& holes, const PlanOptions& options, const
     p.shape = aco::Shape::OpenPath;
     p.start = at;
     if (last) p.end = m.start;
-    p.points.reserve(group.input_order.size());
-    for (aco::HoleIndex h : group.input_order) p.points.push_back(holes[h].center);
+    // The route's stops: a hole, or a chain (a drilled slot's holes) drilled
+    // together in its own order, stopping at the chain's centroid.
+    const RouteUnits units = route_units(holes, group.input_order);
+    p.points = units.points;
     // --time-limit bounds the whole run: each tool gets its share by hole count.
     aco::Params params = options.solver;
     if (params.time_limit_s > 0) {
@@ -508,10 +568,10 @@ PlanResult plan_job(const aco::HoleSet& holes, const PlanOptions& options, const
                                                static_cast<double>(holes.size()));
     }
     group.solution = aco::solve(p, params);
-    for (aco::HoleIndex local : group.solution.order) group.optimized.push_back(group.input_order[local]);
+    group.optimized = units.expand(group.solution.order);
     aco::Problem pnn = p;
     pnn.start = at_nn;
-    for (aco::HoleIndex local : aco::nearest_neighbor(pnn)) group.nearest_neighbor.push_back(group.input_order[local]);
+    group.nearest_neighbor = units.expand(aco::nearest_neighbor(pnn));
     at = holes[group.optimized.back()].center;
     at_nn = holes[group.nearest_neighbor.back()].center;
     result.iterations += group.solution.iterations;

@@ -58,6 +58,18 @@ std::string setup_sheet_html(const aco::HoleSet& holes, const PlanResult& plan, 
     << len(e.width()) << " x " << len(e.height()) << " " << unit << "). Z0 is the top of the part; R plane Z"
     << len(ps.r_plane_mm) << ", initial plane Z" << len(ps.initial_z_mm) << " " << unit << ".</div>\n";
 
+  if (ctx.input && (ctx.input->slots_drilled || !ctx.input->skipped.empty())) {
+    h << "<h2>Slots and features not drilled</h2>\n<ul>\n";
+    if (ctx.input->slots_drilled) {
+      h << "<li>" << ctx.input->slots_drilled << " slot(s) drilled as rows of " << ctx.input->slot_holes
+        << " overlapping holes, ends first.</li>\n";
+    }
+    for (const formats::Note& n : ctx.input->skipped) {
+      h << "<li><b>Not drilled</b>: " << (n.line ? "line " + std::to_string(n.line) + ": " : std::string()) << esc(n.message)
+        << "</li>\n";
+    }
+    h << "</ul>\n";
+  }
   h << "<h2>Tools</h2>\n<table class=\"tools\">\n<tr><th>T</th><th>Tool</th><th class=\"n\">Diameter " << unit
     << "</th><th>Cycle</th><th class=\"n\">Depth Z " << unit << "</th><th class=\"n\">Peck " << unit
     << "</th><th class=\"n\">Dwell s</th><th class=\"n\">Feed " << unit << "/min</th><th class=\"n\">rpm</th><th class=\"n\">Holes</th>"

@@ -79,7 +79,15 @@ class Reader {
   int tool_ = -1;                // -1: none selected yet; 0: unloaded (T0)
   double x_ = 0, y_ = 0;         // file units, before the G93 offset
   double off_x_ = 0, off_y_ = 0;
-  std::size_t slots_ = 0, routed_ = 0;
+  // A routed path: plunged (M15) at path_[0], then straight (G01) or arc
+  // (G02/G03) moves until the retract (M16/M17). Straight moves along one line
+  // make an oval slot (KiCad and Mentor write oval pads so); anything else is
+  // routing, which no drill can do.
+  bool plunged_ = false, path_arc_ = false;
+  std::uint32_t path_line_ = 0;
+  std::vector<aco::Point2> route_;  // file units, offset applied
+  void end_path();
+  void add_slot(aco::Point2 from, aco::Point2 to, std::uint32_t line);
   LoadedHoles out_;
 };
 
@@ -208,15 +216,25 @@ void Reader::body_line(std::string_view s) {
     header_line(s);
     return;
   }
-  if (starts_with(s, "M15") || starts_with(s, "M16") || starts_with(s, "M17") || starts_with(s, "M14")) {
-    route_mode_ = true;  // plunge / retract of a routing tool
+  if (starts_with(s, "M15") || starts_with(s, "M14")) {
+    route_mode_ = true;  // plunge of a routing tool: a path starts here
+    end_path();
+    plunged_ = true;
+    path_arc_ = false;
+    path_line_ = line_;
+    route_.assign(1, {x_ + off_x_, y_ + off_y_});
+    return;
+  }
+  if (starts_with(s, "M16") || starts_with(s, "M17")) {
+    end_path();  // retract: the path is complete
     return;
   }
   // A block of words: G codes, X/Y coordinates, a repeat R.
   std::size_t i = 0;
-  std::optional<double> wx, wy;
+  std::optional<double> wx, wy, ex, ey;  // the hit (or a slot's start), and a G85 slot's end
   std::optional<long long> repeat;
   bool slot = false, g93 = false, any = false;
+  int motion = -1;  // G01/G02/G03 on this line
   while (i < s.size()) {
     const char letter = s[i];  // Excellon words are upper case; "x12a4" is garbage, not an A word
     if (letter == ' ') {
@@ -228,7 +246,10 @@ void Reader::body_line(std::string_view s) {
     switch (letter) {
       case 'G': {
         const int g = static_cast<int>(plain_number(v));
-        if (g == 0 || g == 1 || g == 2 || g == 3) route_mode_ = true;
+        if (g == 0 || g == 1 || g == 2 || g == 3) {
+          route_mode_ = true;
+          motion = g;
+        }
         else if (g == 5 || g == 81) route_mode_ = false;
         else if (g == 85) slot = true;
         else if (g == 90) absolute_ = true;
@@ -239,7 +260,10 @@ void Reader::body_line(std::string_view s) {
       case 'X': {
         if (v.empty()) fail("X without a number");
         const double c = coordinate(v);
-        if (slot) break;  // the slot's end point
+        if (slot) {
+          ex = c;  // the slot's end point
+          break;
+        }
         wx = c;
         any = true;
         break;
@@ -247,7 +271,10 @@ void Reader::body_line(std::string_view s) {
       case 'Y': {
         if (v.empty()) fail("Y without a number");
         const double c = coordinate(v);
-        if (slot) break;
+        if (slot) {
+          ey = c;
+          break;
+        }
         wy = c;
         any = true;
         break;
@@ -273,7 +300,20 @@ void Reader::body_line(std::string_view s) {
     return;
   }
   if (slot) {
-    ++slots_;
+    // "X..Y..G85X..Y..": a canned slot from the first point to the second.
+    double sx = x_, sy = y_;
+    if (absolute_) {
+      sx = wx.value_or(x_);
+      sy = wy.value_or(y_);
+    } else {
+      sx += wx.value_or(0.0);
+      sy += wy.value_or(0.0);
+    }
+    const double fx = absolute_ ? ex.value_or(sx) : sx + ex.value_or(0.0);
+    const double fy = absolute_ ? ey.value_or(sy) : sy + ey.value_or(0.0);
+    add_slot({sx + off_x_, sy + off_y_}, {fx + off_x_, fy + off_y_}, line_);
+    x_ = fx;
+    y_ = fy;
     return;
   }
   if (!any) return;
@@ -282,8 +322,11 @@ void Reader::body_line(std::string_view s) {
     for (long long k = 0; k < *repeat; ++k) {
       x_ += wx.value_or(0.0);
       y_ += wy.value_or(0.0);
-      if (route_mode_) ++routed_;
-      else hit(x_, y_);
+      if (route_mode_) {
+        if (plunged_) route_.push_back({x_ + off_x_, y_ + off_y_});
+      } else {
+        hit(x_, y_);
+      }
     }
     return;
   }
@@ -295,10 +338,63 @@ void Reader::body_line(std::string_view s) {
     y_ += wy.value_or(0.0);
   }
   if (route_mode_) {
-    ++routed_;
-    return;
+    if (plunged_) {
+      if (motion == 2 || motion == 3) path_arc_ = true;
+      route_.push_back({x_ + off_x_, y_ + off_y_});
+    }
+    return;  // a rapid (G00) or a routed move: no hit
   }
   hit(x_, y_);
+}
+
+void Reader::add_slot(aco::Point2 from, aco::Point2 to, std::uint32_t line) {
+  if (tool_ < 0) fail("slot before any tool is selected");
+  auto t = tools_.find(tool_);
+  if (t == tools_.end()) fail("tool T" + std::to_string(tool_) + " is not defined");
+  const double u = unit_mm();
+  Slot slot;
+  slot.from = {from.x * u, from.y * u};
+  slot.to = {to.x * u, to.y * u};
+  slot.width_mm = t->second * u;
+  slot.layer = "T" + std::to_string(tool_);
+  slot.source_line = line;
+  out_.slots.push_back(std::move(slot));
+  check_limit(path_, line_, out_.slots.size(), options_.dxf.max_holes);
+}
+
+void Reader::end_path() {
+  if (!plunged_) return;
+  plunged_ = false;
+  if (route_.size() < 2) return;  // plunged and retracted in place: nothing cut
+  // Collinear straight moves: an oval slot between the extreme points.
+  const aco::Point2 a = route_.front();
+  std::size_t far = 0;
+  double far_d = -1;
+  for (std::size_t i = 0; i < route_.size(); ++i) {
+    const double d = aco::euclidean(a, route_[i]);
+    if (d > far_d) far_d = d, far = i;
+  }
+  const aco::Point2 b = route_[far];
+  bool straight = !path_arc_ && far_d > 0;
+  for (const aco::Point2& p : route_) {
+    // Distance from the line a-b, in file units; a thousandth of the length is drawing noise.
+    const double cross = (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x);
+    if (far_d > 0 && std::fabs(cross) / far_d > 1e-3 * far_d + 1e-9) straight = false;
+  }
+  if (straight) {
+    // The extremes along the line: project every point on a-b.
+    double lo = 0, hi = 0;
+    for (const aco::Point2& p : route_) {
+      const double t = ((p.x - a.x) * (b.x - a.x) + (p.y - a.y) * (b.y - a.y)) / (far_d * far_d);
+      lo = std::min(lo, t);
+      hi = std::max(hi, t);
+    }
+    add_slot({a.x + lo * (b.x - a.x), a.y + lo * (b.y - a.y)}, {a.x + hi * (b.x - a.x), a.y + hi * (b.y - a.y)}, path_line_);
+    return;
+  }
+  out_.skipped.push_back({path_line_, "routed path of " + std::to_string(route_.size() - 1) + " moves" +
+                                          (path_arc_ ? " with arcs" : "") + " with T" + std::to_string(tool_) +
+                                          ": routing, not drilling"});
 }
 
 LoadedHoles Reader::run(std::string_view data) {
@@ -346,10 +442,7 @@ LoadedHoles Reader::run(std::string_view data) {
     if (in_header_) header_line(s);
     else body_line(s);
   }
-  if (slots_ > 0 || routed_ > 0) {
-    out_.warnings.push_back({0, std::to_string(slots_) + " G85 slot(s) and " + std::to_string(routed_) +
-                                    " routed move(s) are not drill hits; skipped"});
-  }
+  end_path();
   out_.metric = fmt_.metric;
   return std::move(out_);
 }

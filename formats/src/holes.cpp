@@ -3,9 +3,11 @@
 #include "formats/holes.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "aco/hole_set.h"
 #include "formats/readers.h"
+#include "gcode/program.h"
 #include "text.h"
 
 namespace formats {
@@ -39,6 +41,60 @@ void filter(LoadedHoles& out, const InputOptions& options) {
 }
 
 }  // namespace
+
+std::vector<aco::Point2> slot_holes(const Slot& slot, double pitch_mm) {
+  const double length = aco::euclidean(slot.from, slot.to);
+  const double pitch = pitch_mm > 0 ? pitch_mm : slot.width_mm / 4;
+  if (!(length > 1e-9) || !(pitch > 0)) return {slot.from};
+  const auto intervals = static_cast<std::size_t>(std::min(1e6, std::ceil(length / pitch - 1e-9)));
+  auto at = [&](std::size_t i) {
+    const double t = static_cast<double>(i) / static_cast<double>(intervals);
+    return aco::Point2{slot.from.x + t * (slot.to.x - slot.from.x), slot.from.y + t * (slot.to.y - slot.from.y)};
+  };
+  std::vector<aco::Point2> out{at(0), at(intervals)};
+  // Breadth-first bisection: each new hole lies midway between two drilled ones.
+  std::vector<std::pair<std::size_t, std::size_t>> level{{0, intervals}}, next;
+  while (!level.empty()) {
+    next.clear();
+    for (auto [lo, hi] : level) {
+      if (hi - lo < 2) continue;
+      const std::size_t mid = lo + (hi - lo) / 2;
+      out.push_back(at(mid));
+      next.push_back({lo, mid});
+      next.push_back({mid, hi});
+    }
+    level.swap(next);
+  }
+  return out;
+}
+
+void apply_slot_policy(LoadedHoles& loaded, const SlotOptions& options) {
+  if (loaded.slots.empty()) return;
+  std::uint32_t chain = 0;
+  for (const aco::Hole& h : loaded.holes) chain = std::max(chain, h.chain);
+  for (const Slot& slot : loaded.slots) {
+    if (options.policy == SlotPolicy::Skip) {
+      auto mm = [](double v) { return gcode::format_number(v, 3); };
+      // No parentheses: the text goes into G-code comments as it is.
+      loaded.skipped.push_back({slot.source_line, "slot " + mm(slot.width_mm) + " mm wide from X" + mm(slot.from.x) + " Y" +
+                                                      mm(slot.from.y) + " to X" + mm(slot.to.x) + " Y" + mm(slot.to.y) +
+                                                      " mm, --slots skip"});
+      continue;
+    }
+    ++chain;
+    ++loaded.slots_drilled;
+    for (aco::Point2 p : slot_holes(slot, options.pitch_mm)) {
+      aco::Hole h;
+      h.center = p;
+      h.diameter = slot.width_mm;
+      h.layer = slot.layer;
+      h.source_line = slot.source_line;
+      h.chain = chain;
+      loaded.holes.push_back(std::move(h));
+      ++loaded.slot_holes;
+    }
+  }
+}
 
 const char* to_string(InputFormat f) {
   switch (f) {
@@ -105,6 +161,7 @@ LoadedHoles parse_holes(const std::string& path, std::string_view data, const In
       out = parse_csv(shown, data, options);
       break;
   }
+  apply_slot_policy(out, options.slots);
   filter(out, options);
   if (path != "-") out.name = out.format == InputFormat::Tsplib ? out.name : stem(path);
   return out;

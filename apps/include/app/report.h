@@ -4,6 +4,7 @@
 #include <string>
 
 #include "app/plan.h"
+#include "formats/holes.h"
 
 namespace app {
 
@@ -13,6 +14,7 @@ struct ReportContext {
   std::string program;  // output program
   Placement placement;  // where program zero sits
   std::string name;     // job name: the input's stem or its own name
+  const formats::LoadedHoles* input = nullptr;  // slots drilled, features not drilled
 };
 
 std::string report_json(const aco::HoleSet& holes, const PlanResult& plan, const ReportContext& context);

@@ -24,10 +24,30 @@ namespace formats {
 enum class InputFormat { Dxf, Excellon, XmlMap, Csv, Tsplib };
 const char* to_string(InputFormat f);
 
+// A slot: an oval hole `width_mm` wide whose centre runs from `from` to `to`
+// (mm): an Excellon G85 canned slot or routed oval, a Gerber obround flash.
+struct Slot {
+  aco::Point2 from, to;
+  double width_mm = 0.0;
+  std::string layer;
+  std::uint32_t source_line = 0;
+};
+
+// What becomes of slots, whatever the format (--slots, --slot-pitch).
+enum class SlotPolicy {
+  Drill,  // a row of holes of the slot's width along it (the default)
+  Skip,   // not drilled; named in the program's header, the report and the setup sheet
+};
+struct SlotOptions {
+  SlotPolicy policy = SlotPolicy::Drill;
+  double pitch_mm = 0.0;  // between the row's holes; 0: a quarter of the slot's width
+};
+
 struct InputOptions {
   dxf::ReadOptions dxf;          // layer and diameter filters, limits, default unit
   double default_unit_mm = 1.0;  // --input-units, for files that do not say
   bool input_units_given = false;
+  SlotOptions slots;
 };
 
 struct Note {
@@ -43,7 +63,24 @@ struct LoadedHoles {
   std::size_t skipped_by_filter = 0;
   std::string name;            // TSPLIB NAME or the file's stem
   std::optional<bool> metric;  // the units the file itself is written in, where it says (Excellon)
+  std::vector<Slot> slots;     // as read; parse_holes drills or skips them (SlotOptions)
+  std::size_t slots_drilled = 0, slot_holes = 0;  // slots made into rows of holes, and how many holes
+  // What the input asks for that the program will not do (skipped slots,
+  // routed paths): never only a warning on stderr — the program's header,
+  // the report and the setup sheet name each one.
+  std::vector<Note> skipped;
 };
+
+// The holes that drill a slot: a row of the slot's width at `pitch_mm` (0: a
+// quarter of the width) from end to end, ordered ends first, then each
+// midpoint of two drilled holes (bisection), so no hole is drilled beside a
+// fresh overlapping one alone: the drill always cuts into two holes
+// symmetrically and does not wander (pcb2gcode orders slot holes likewise).
+std::vector<aco::Point2> slot_holes(const Slot& slot, double pitch_mm);
+
+// Applies the slot policy: drilled slots become holes (one chain each, so the
+// planner keeps their order); skipped ones are named in `skipped`.
+void apply_slot_policy(LoadedHoles& loaded, const SlotOptions& options);
 
 InputFormat detect_format(const std::string& path, std::string_view data);
 

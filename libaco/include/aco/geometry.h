@@ -32,6 +32,9 @@ struct Hole {
   Length diameter = 0.0;      // mm
   std::string layer;          // DXF layer or Excellon tool name; empty when the format has none
   std::uint32_t source_line = 0;  // 1-based line of the entity in its file; 0 = unknown
+  // Nonzero: this hole belongs to a chain (the holes of a drilled slot) that
+  // is drilled together and in the order the chain's holes appear in the set.
+  std::uint32_t chain = 0;
 };
 
 using HoleSet = std::vector<Hole>;
