@@ -96,8 +96,13 @@ std::vector<BadCase> catalogue() {
       {"excellon_garbage_line", "a.drl", "M48\nINCH,TZ\nT1C0.02\n%\nT1\n@@@@\nM30\n", plan, "a.drl:6:"},
       {"excellon_negative_diameter", "a.drl", "M48\nINCH,TZ\nT1C-0.02\n%\nT1\nX1Y1\nM30\n", plan, "a.drl:3: tool T1 has a negative diameter"},
       {"excellon_bad_coordinate", "a.drl", "M48\nINCH,TZ\nT1C0.02\n%\nT1\nX12.3.4Y1\nM30\n", plan, "a.drl:6:"},
-      {"gerber_drill", "a.drd", "G04 drill*\n%FSLAX24Y24*%\n%MOIN*%\n%ADD10C,0.0300*%\nD10*\nX1000Y1000D03*\nM02*\n", plan,
-       "Gerber drill data is not supported"},
+      // Gerber (issue 16): drawings, maps and routes are refused, never drilled.
+      {"gerber_drill_drawing", "a.drd", "G04 drill drawing*\n%FSLAX24Y24*%\n%MOIN*%\n%ADD10C,0.0300*%\nD10*\nX1000Y1000D02*\nX2000Y1000D01*\nM02*\n", plan,
+       "a.drd:7: this Gerber draws 1 stroke(s) and 0 region edge(s): it does not look like drill data"},
+      {"gerber_drill_map", "a.gbr", "%TF.FileFunction,Drillmap*%\n%FSLAX24Y24*%\n%MOIN*%\nM02*\n", plan, "a.gbr:1: a drill map"},
+      {"gerber_route", "a.gbr", "%TF.FileFunction,NonPlated,1,2,NPTH,Route*%\n%FSLAX24Y24*%\nM02*\n", plan, "a.gbr:1: a route file"},
+      {"gerber_rs274d_without_apertures", "a.gbr", "G54D10*\nX010000Y020000D03*\nM02*\n", plan, "a.gbr:1: aperture D10 is not defined (an RS-274D file needs its aperture list: --apertures FILE)"},
+      {"gerber_bad_aperture_list", "a.gbr", "G54D10*\nX010000Y020000D03*\nM02*\n", plan + " --apertures {dir}/tools.json", "tools.json:1: expected \"D<code> <shape> <size>"},
       // XML
       {"xml_malformed", "a.xml", "<holemap><hole x=\"1\" y=\"2\"></holemap>\n", plan, "a.xml:1: XML"},
       {"xml_wrong_root", "a.xml", "<drawing/>\n", plan, "expected a <holemap> root"},

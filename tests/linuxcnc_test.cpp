@@ -68,7 +68,8 @@ std::string haas_to_linuxcnc(const std::string& haas) {
   return out + haas.substr(last);
 }
 
-void check_program(const std::string& program_path, const std::string& sample, bool inch, const std::string& what) {
+void check_program(const std::string& program_path, const std::string& sample, bool inch, const std::string& what,
+                   std::string holes_csv = "") {
   testutil::TempDir t;
   // A tool table naming every T/H number the program uses.
   const std::string prog = testutil::slurp(program_path);
@@ -84,7 +85,8 @@ void check_program(const std::string& program_path, const std::string& sample, b
   ASSERT_EQ(r.code, 0) << what << ": rs274 rejected the program:\n" << r.err;
   EXPECT_EQ(r.err.find("error"), std::string::npos) << r.err;
   std::vector<CanonHole> canon = holes_from_canon(r.out);
-  aco::HoleSet expected = testutil::read_holes_csv(testutil::slurp(sample.substr(0, sample.size() - 4) + ".holes.csv"));
+  if (holes_csv.empty()) holes_csv = sample.substr(0, sample.size() - 4) + ".holes.csv";
+  aco::HoleSet expected = testutil::read_holes_csv(testutil::slurp(holes_csv));
   ASSERT_EQ(canon.size(), expected.size()) << what;
   // Programs put X0 Y0 at the lower left of the holes by default (--origin).
   testutil::move_lower_left_to_zero(expected);
@@ -270,5 +272,21 @@ TEST(linuxcnc_test, a_larger_machine_plans_what_a_vf2_refuses_and_origins_move_t
     auto v2 = testutil::acodrill_run("verify " + testutil::shell_quote(nc) + " --holes " + testutil::shell_quote(far) +
                                      " -q --origin " + origin);
     EXPECT_EQ(v2.code, 0) << origin << ": " << v2.out;
+  }
+}
+
+// Issue 16: a Gerber drill file planned; rs274 reads the program back to the
+// holes the independent reader found in it (slots skipped: the list holds
+// round flashes only).
+TEST(linuxcnc_test, gerber_drill_files_plan_to_programs_rs274_reads_back) {
+  ASSERT_TRUE(have_rs274());
+  testutil::TempDir t;
+  for (const char* input : {"real-gerber/ucamco_ex2_Plated_1-10_PTH_Drill.gbr",
+                            "real-gerber/kicad/flat_hierarchy/x2_mm46/flat_hierarchy-PTH-drl.gbr"}) {
+    const std::string in = testutil::data(input);
+    auto r = testutil::acodrill_run("plan " + testutil::shell_quote(in) + " -o " + testutil::shell_quote(t / "p.nc") +
+                                    " -q --iterations 10 --slots skip --dialect linuxcnc");
+    ASSERT_EQ(r.code, 0) << r.err;
+    check_program(t / "p.nc", in, false, input, in + ".holes.csv");
   }
 }

@@ -80,6 +80,7 @@ struct InputArgs {
   std::size_t max_expansion = 10'000'000;
   std::string slots = "drill";
   double slot_pitch = 0.0;
+  std::string apertures;
 };
 
 void add_input_options(CLI::App* cmd, InputArgs& a) {
@@ -95,6 +96,9 @@ void add_input_options(CLI::App* cmd, InputArgs& a) {
                   "not drilled, and named in the program header, report and setup sheet");
   cmd->add_option("--slot-pitch", a.slot_pitch, "Distance between a drilled slot's holes in mm (default: a quarter of its width)")
       ->check(CLI::Range(0.0, 1e4));
+  cmd->add_option("--apertures", a.apertures,
+                  "Aperture list of an RS-274D Gerber file: rows \"D10 C 0.032\" (D code, shape C/R/O, size; inch unless "
+                  "a suffix MM/MIL or a line UNITS MM|INCH|MILS says), or RS-274X %FS/%MO/%AD lines");
   cmd->add_option("--max-expansion", a.max_expansion,
                   "Refuse DXF files whose blocks expand to more references than this (default 10000000)")
       ->check(CLI::Range(std::size_t{1}, std::size_t{1'000'000'000}));
@@ -117,6 +121,10 @@ app::InputOptions to_input_options(const InputArgs& a) {
   else if (a.slots == "skip") o.slots.policy = formats::SlotPolicy::Skip;
   else throw app::UserError("--slots must be drill or skip (got \"" + a.slots + "\")");
   o.slots.pitch_mm = a.slot_pitch;
+  if (!a.apertures.empty()) {
+    o.aperture_list = app::read_file(a.apertures);
+    o.aperture_list_path = a.apertures;
+  }
   return o;
 }
 
@@ -125,6 +133,7 @@ void print_warnings(const app::LoadedHoles& loaded, const std::string& path, boo
   std::string summary = std::to_string(loaded.holes.size()) + " holes from " + std::string(formats::to_string(loaded.format));
   if (loaded.duplicates_removed) summary += ", " + std::to_string(loaded.duplicates_removed) + " duplicates removed";
   if (loaded.skipped_by_filter) summary += ", " + std::to_string(loaded.skipped_by_filter) + " filtered out";
+  if (!loaded.drill_function.empty()) summary += " (" + loaded.drill_function + ")";
   if (loaded.slots_drilled) {
     summary += ", " + std::to_string(loaded.slots_drilled) + " slot(s) drilled as " + std::to_string(loaded.slot_holes) + " holes";
   }
@@ -160,6 +169,15 @@ std::string origin_comment(const app::Placement& p, gcode::Units units) {
          ".." + c(e.y_max) + (inch ? " IN" : " MM");
 }
 
+// A drill file written back stays in the input's coordinates, registered with
+// the board's other layers, wherever program zero is.
+std::vector<gcode::ToolPass> in_input_coordinates(std::vector<gcode::ToolPass> passes, const app::Placement& placement) {
+  for (gcode::ToolPass& p : passes) {
+    for (aco::Point2& h : p.holes) h = {h.x + placement.zero.x, h.y + placement.zero.y};
+  }
+  return passes;
+}
+
 std::string format_minutes(double seconds) {
   return gcode::format_number(seconds / 60.0, 2) + " min";
 }
@@ -175,7 +193,7 @@ int cmd_holes(const std::string& input, const InputArgs& in_args, const std::str
 }
 
 struct PlanArgs {
-  std::string input, output, report, svg, svg_compare, convergence, excellon, setup_sheet;
+  std::string input, output, report, svg, svg_compare, convergence, excellon, gerber, setup_sheet;
   std::string dialect = "haas", units, tools, machine, material, objective = "distance", origin = "lower-left";
   std::optional<double> thickness, default_diameter;
   std::size_t resume_from = 1;
@@ -185,7 +203,7 @@ struct PlanArgs {
 
 int cmd_plan(const PlanArgs& a, const SolverArgs& s, const InputArgs& in_args) {
   // Refuse to overwrite the input with the program before doing any work.
-  for (const std::string* out : {&a.output, &a.report, &a.svg, &a.svg_compare, &a.convergence, &a.excellon, &a.setup_sheet}) {
+  for (const std::string* out : {&a.output, &a.report, &a.svg, &a.svg_compare, &a.convergence, &a.excellon, &a.gerber, &a.setup_sheet}) {
     if (!out->empty() && app::same_file(a.input, *out)) {
       throw app::UserError(*out, 0, "output would overwrite the input file");
     }
@@ -212,9 +230,10 @@ int cmd_plan(const PlanArgs& a, const SolverArgs& s, const InputArgs& in_args) {
   if (!a.tools.empty()) o.tools = app::load_tool_table(a.tools);
 
   app::LoadedHoles loaded = app::load_holes(a.input, to_input_options(in_args));
-  // An Excellon file is a circuit board unless the user says otherwise: PCB
+  // PCB drill data is a circuit board unless the user says otherwise: PCB
   // feeds and speeds through a 1.6 mm board, not a quarter inch of steel.
-  if (a.material.empty() && loaded.format == app::InputFormat::Excellon) o.material = app::Material::Pcb;
+  const bool board = loaded.format == app::InputFormat::Excellon || loaded.format == app::InputFormat::Gerber;
+  if (a.material.empty() && board) o.material = app::Material::Pcb;
   o.thickness_mm = a.thickness.value_or(o.material == app::Material::Pcb ? 1.6 : 6.35);
   if (loaded.holes.empty()) throw app::UserError(a.input == "-" ? "<stdin>" : a.input, 0, "no holes to drill");
 
@@ -282,12 +301,11 @@ int cmd_plan(const PlanArgs& a, const SolverArgs& s, const InputArgs& in_args) {
   if (!a.excellon.empty()) {
     // The input's own units when it is Excellon, unless --units chose others.
     const bool metric = a.units.empty() ? loaded.metric.value_or(true) : o.program.units == gcode::Units::Mm;
-    // A drill file stays in the input's coordinates, registered with the board's other layers.
-    std::vector<gcode::ToolPass> in_input = passes;
-    for (gcode::ToolPass& p : in_input) {
-      for (aco::Point2& h : p.holes) h = {h.x + placement.zero.x, h.y + placement.zero.y};
-    }
-    app::write_file_atomic(a.excellon, formats::write_excellon(in_input, metric, source_name));
+    app::write_file_atomic(a.excellon, formats::write_excellon(in_input_coordinates(passes, placement), metric, source_name));
+  }
+  if (!a.gerber.empty()) {
+    app::write_file_atomic(a.gerber, formats::write_gerber(in_input_coordinates(passes, placement), source_name,
+                                                           loaded.drill_function));
   }
 
   if (!a.quiet) {
@@ -312,6 +330,7 @@ int cmd_plan(const PlanArgs& a, const SolverArgs& s, const InputArgs& in_args) {
     if (!a.report.empty()) std::fprintf(stderr, "  report: %s\n", a.report.c_str());
     if (!a.convergence.empty()) std::fprintf(stderr, "  convergence: %s\n", a.convergence.c_str());
     if (!a.excellon.empty()) std::fprintf(stderr, "  excellon: %s\n", a.excellon.c_str());
+    if (!a.gerber.empty()) std::fprintf(stderr, "  gerber: %s\n", a.gerber.c_str());
     if (!a.svg.empty()) std::fprintf(stderr, "  picture: %s\n", a.svg.c_str());
     if (!a.svg_compare.empty()) std::fprintf(stderr, "  comparison: %s\n", a.svg_compare.c_str());
     if (!a.setup_sheet.empty()) std::fprintf(stderr, "  setup sheet: %s\n", a.setup_sheet.c_str());
@@ -429,14 +448,16 @@ int main(int argc, char** argv) {
       "                                                            zero at the holes' centre; a sheet for the operator\n"
       "  acodrill plan plate.dxf -o plate.nc --algorithm as --local-search none --ants 125 --iterations 125\n"
       "                                                            the thesis's Ant System\n"
-      "Inputs: DXF, Excellon, XML hole map, CSV (x,y,diameter mm), TSPLIB; '-' reads stdin.");
-  plan_cmd->add_option("input", plan.input, "Input file (DXF, Excellon, XML, CSV, TSPLIB) or - for stdin")->required();
+      "Inputs: DXF, Excellon, Gerber (RS-274X/X2; RS-274D with --apertures), XML hole map, CSV (x,y,diameter mm),\n"
+      "TSPLIB; '-' reads stdin.");
+  plan_cmd->add_option("input", plan.input, "Input file (DXF, Excellon, Gerber, XML, CSV, TSPLIB) or - for stdin")->required();
   plan_cmd->add_option("-o,--output", plan.output, "Program to write (- = stdout)")->required();
   plan_cmd->add_option("--report", plan.report, "Write a JSON report: holes, tools, travel, time, solver");
   plan_cmd->add_option("--svg", plan.svg, "Write a picture of the route (SVG)");
   plan_cmd->add_option("--svg-compare", plan.svg_compare, "Write input order and optimized route side by side (SVG)");
   plan_cmd->add_option("--convergence", plan.convergence, "Write best length by iteration and time (CSV)");
   plan_cmd->add_option("--excellon", plan.excellon, "Also write the optimized order as an Excellon drill file");
+  plan_cmd->add_option("--gerber", plan.gerber, "Also write the optimized order as an RS-274X (Gerber X2) drill file");
   plan_cmd->add_option("--setup-sheet", plan.setup_sheet,
                        "Write a printable setup sheet (HTML): program zero, tools, times, route picture");
   plan_cmd->add_option("--origin", plan.origin,
@@ -447,7 +468,7 @@ int main(int argc, char** argv) {
   plan_cmd->add_option("--units", plan.units, "Program units: mm (default) | inch");
   plan_cmd->add_option("--tools", plan.tools, "Tool table (JSON); default: one tool per diameter");
   plan_cmd->add_option("--machine", plan.machine, "Machine profile (JSON); default: HAAS VF-2 class");
-  plan_cmd->add_option("--material", plan.material, "steel | aluminium | pcb: feeds and speeds of generated tools (default steel; pcb for Excellon input)");
+  plan_cmd->add_option("--material", plan.material, "steel | aluminium | pcb: feeds and speeds of generated tools (default steel; pcb for Excellon and Gerber input)");
   plan_cmd->add_option("--thickness", plan.thickness, "Part thickness in mm for generated tools (default 6.35, or 1.6 for pcb)");
   plan_cmd->add_option("--default-diameter", plan.default_diameter,
                        "Diameter in mm of holes the input gives none (CSV rows without one, TSPLIB nodes)")

@@ -447,15 +447,9 @@ LoadedHoles Reader::run(std::string_view data) {
   return std::move(out_);
 }
 
-bool is_gerber(std::string_view head) {
-  return head.find("%FS") != std::string_view::npos || head.find("%MO") != std::string_view::npos ||
-         head.find("%ADD") != std::string_view::npos || head.find("G04 ") != std::string_view::npos;
-}
-
 }  // namespace
 
 bool looks_like_excellon(std::string_view head) {
-  if (is_gerber(head)) return true;  // routed to the reader, which refuses it with one clear line
   if (head.rfind("M48", 0) == 0 || head.find("\nM48") != std::string_view::npos) return true;
   // No header (old OrCAD): a tool definition with a diameter, then hits.
   std::size_t t = head.find("\nT");
@@ -470,12 +464,6 @@ bool looks_like_excellon(std::string_view head) {
 }
 
 LoadedHoles parse_excellon(const std::string& path, std::string_view data, const InputOptions& options) {
-  if (is_gerber(data.substr(0, 65536))) {
-    std::size_t at = data.find("%FS");
-    if (at == std::string_view::npos) at = data.find("%MO");
-    const auto line = static_cast<std::uint32_t>(1 + std::count(data.begin(), data.begin() + static_cast<long>(std::min(at, data.size())), '\n'));
-    throw InputError(path, line, "RS-274X Gerber drill data is not supported; export the drill file as Excellon");
-  }
   Reader reader(path, options);
   return reader.run(data);
 }

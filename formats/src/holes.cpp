@@ -68,7 +68,7 @@ std::vector<aco::Point2> slot_holes(const Slot& slot, double pitch_mm) {
   return out;
 }
 
-void apply_slot_policy(LoadedHoles& loaded, const SlotOptions& options) {
+void apply_slot_policy(LoadedHoles& loaded, const SlotOptions& options, const std::string& path, std::size_t max_holes) {
   if (loaded.slots.empty()) return;
   std::uint32_t chain = 0;
   for (const aco::Hole& h : loaded.holes) chain = std::max(chain, h.chain);
@@ -83,6 +83,13 @@ void apply_slot_policy(LoadedHoles& loaded, const SlotOptions& options) {
     }
     ++chain;
     ++loaded.slots_drilled;
+    // Count before making them: a long slot at a fine pitch must not exhaust memory.
+    const double pitch = options.pitch_mm > 0 ? options.pitch_mm : slot.width_mm / 4;
+    const double count = pitch > 0 ? aco::euclidean(slot.from, slot.to) / pitch + 1 : 1;
+    if (!(count <= static_cast<double>(max_holes - std::min(max_holes, loaded.holes.size())))) {
+      throw InputError(path, slot.source_line, "drilling the slots makes more than " + std::to_string(max_holes) +
+                                                   " holes (the hole limit, --max-holes); a coarser --slot-pitch or --slots skip");
+    }
     for (aco::Point2 p : slot_holes(slot, options.pitch_mm)) {
       aco::Hole h;
       h.center = p;
@@ -100,6 +107,7 @@ const char* to_string(InputFormat f) {
   switch (f) {
     case InputFormat::Dxf: return "dxf";
     case InputFormat::Excellon: return "excellon";
+    case InputFormat::Gerber: return "gerber";
     case InputFormat::XmlMap: return "xml";
     case InputFormat::Csv: return "csv";
     case InputFormat::Tsplib: return "tsplib";
@@ -111,6 +119,7 @@ InputFormat detect_format(const std::string& path, std::string_view data) {
   if (dxf::looks_like_dxf(data.substr(0, 65536))) return InputFormat::Dxf;
   std::string_view head = trim(data.substr(0, 4096));
   if (!head.empty() && head.front() == '<') return InputFormat::XmlMap;
+  if (looks_like_gerber(data.substr(0, 65536))) return InputFormat::Gerber;
   if (looks_like_excellon(data.substr(0, 65536))) return InputFormat::Excellon;
   // TSPLIB: a "NAME" / "TYPE" / "DIMENSION" keyword header.
   for (const char* key : {"NAME", "TYPE", "DIMENSION", "COMMENT", "EDGE_WEIGHT_TYPE"}) {
@@ -120,6 +129,7 @@ InputFormat detect_format(const std::string& path, std::string_view data) {
   if (ext == "dxf") return InputFormat::Dxf;
   if (ext == "tsp") return InputFormat::Tsplib;
   if (ext == "xml") return InputFormat::XmlMap;
+  if (ext == "gbr" || ext == "ger" || ext == "pho" || ext == "gtl") return InputFormat::Gerber;
   if (ext == "drl" || ext == "drd" || ext == "xln" || ext == "exc" || ext == "ncd") return InputFormat::Excellon;
   return InputFormat::Csv;
 }
@@ -148,6 +158,9 @@ LoadedHoles parse_holes(const std::string& path, std::string_view data, const In
     case InputFormat::Excellon:
       out = parse_excellon(shown, data, options);
       break;
+    case InputFormat::Gerber:
+      out = parse_gerber(shown, data, options);
+      break;
     case InputFormat::XmlMap:
       check_text(shown, data);
       out = parse_xml_map(shown, data, options);
@@ -161,7 +174,7 @@ LoadedHoles parse_holes(const std::string& path, std::string_view data, const In
       out = parse_csv(shown, data, options);
       break;
   }
-  apply_slot_policy(out, options.slots);
+  apply_slot_policy(out, options.slots, shown, options.dxf.max_holes);
   filter(out, options);
   if (path != "-") out.name = out.format == InputFormat::Tsplib ? out.name : stem(path);
   return out;

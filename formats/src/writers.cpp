@@ -1,5 +1,6 @@
 #include "formats/writers.h"
 
+#include <cmath>
 #include <sstream>
 
 namespace formats {
@@ -29,6 +30,29 @@ std::string write_excellon(const std::vector<gcode::ToolPass>& passes, bool metr
     }
   }
   out << "T0\nM30\n";
+  return out.str();
+}
+
+std::string write_gerber(const std::vector<gcode::ToolPass>& passes, const std::string& source,
+                         const std::string& file_function) {
+  std::ostringstream out;
+  // Comments and attributes may not hold '*' or '%'.
+  std::string src;
+  for (char c : source) src += (c == '*' || c == '%' || static_cast<unsigned char>(c) < 32) ? '_' : c;
+  out << "G04 Drill order optimized by acodrill from " << src << "*\n";
+  out << "%TF.GenerationSoftware,acodrill,acodrill,0.1.0*%\n";
+  if (!file_function.empty()) out << "%TF.FileFunction," << file_function << "*%\n";
+  out << "%TF.FilePolarity,Positive*%\n%FSLAX46Y46*%\n%MOMM*%\n";
+  for (std::size_t i = 0; i < passes.size(); ++i) {
+    out << "%ADD" << (10 + i) << "C," << gcode::format_number(passes[i].tool.diameter_mm, 6) << "*%\n";
+  }
+  out << "G01*\n%LPD*%\n";
+  auto coord = [](double mm) { return std::to_string(static_cast<long long>(std::llround(mm * 1e6))); };
+  for (std::size_t i = 0; i < passes.size(); ++i) {
+    out << "D" << (10 + i) << "*\n";
+    for (const aco::Point2& h : passes[i].holes) out << "X" << coord(h.x) << "Y" << coord(h.y) << "D03*\n";
+  }
+  out << "M02*\n";
   return out.str();
 }
 

@@ -21,7 +21,7 @@
 
 namespace formats {
 
-enum class InputFormat { Dxf, Excellon, XmlMap, Csv, Tsplib };
+enum class InputFormat { Dxf, Excellon, Gerber, XmlMap, Csv, Tsplib };
 const char* to_string(InputFormat f);
 
 // A slot: an oval hole `width_mm` wide whose centre runs from `from` to `to`
@@ -48,6 +48,8 @@ struct InputOptions {
   double default_unit_mm = 1.0;  // --input-units, for files that do not say
   bool input_units_given = false;
   SlotOptions slots;
+  // RS-274D's aperture list (--apertures): its text and name; empty: none.
+  std::string aperture_list, aperture_list_path;
 };
 
 struct Note {
@@ -69,6 +71,8 @@ struct LoadedHoles {
   // routed paths): never only a warning on stderr — the program's header,
   // the report and the setup sheet name each one.
   std::vector<Note> skipped;
+  // Gerber X2: the file's %TF.FileFunction ("Plated,1,4,PTH,Drill"): plating and layer span.
+  std::string drill_function;
 };
 
 // The holes that drill a slot: a row of the slot's width at `pitch_mm` (0: a
@@ -79,8 +83,9 @@ struct LoadedHoles {
 std::vector<aco::Point2> slot_holes(const Slot& slot, double pitch_mm);
 
 // Applies the slot policy: drilled slots become holes (one chain each, so the
-// planner keeps their order); skipped ones are named in `skipped`.
-void apply_slot_policy(LoadedHoles& loaded, const SlotOptions& options);
+// planner keeps their order); skipped ones are named in `skipped`. More than
+// `max_holes` holes in all is an InputError naming `path` and the slot's line.
+void apply_slot_policy(LoadedHoles& loaded, const SlotOptions& options, const std::string& path, std::size_t max_holes);
 
 InputFormat detect_format(const std::string& path, std::string_view data);
 

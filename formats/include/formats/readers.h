@@ -16,4 +16,7 @@ LoadedHoles parse_xml_map(const std::string& path, std::string_view data, const 
 bool looks_like_excellon(std::string_view head);
 LoadedHoles parse_excellon(const std::string& path, std::string_view data, const InputOptions& options);
 
+bool looks_like_gerber(std::string_view head);
+LoadedHoles parse_gerber(const std::string& path, std::string_view data, const InputOptions& options);
+
 }  // namespace formats

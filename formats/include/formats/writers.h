@@ -11,4 +11,10 @@ namespace formats {
 // tools numbered as in the passes).
 std::string write_excellon(const std::vector<gcode::ToolPass>& passes, bool metric, const std::string& source);
 
+// The passes as an RS-274X drill file: one round aperture per tool, a flash per
+// hole in drilling order, mm in 4.6 format. `file_function` (a Gerber X2
+// %TF.FileFunction value such as "Plated,1,2,PTH,Drill") is written when known.
+std::string write_gerber(const std::vector<gcode::ToolPass>& passes, const std::string& source,
+                         const std::string& file_function);
+
 }  // namespace formats
