@@ -41,6 +41,7 @@ int main(int argc, char** argv) {
                "--iterations 125 --local-search none --threads 1,2 --seeds 30 --out runs.csv\n"
                "  acobench --preset thesis --quick --out thesis.csv     the thesis's experiments 1-5, tables 4.1-4.15\n",
                "acobench"};
+  cli.set_version_flag("--version", std::string("acobench ") + ACO_VERSION);
   std::vector<std::string> instances, algorithms{"acs"}, local_search{"2opt+oropt"};
   std::vector<double> alphas{1.0}, betas{-1.0}, rhos{-1.0}, time_limits{0.0};
   std::vector<int> ants{0}, iterations{0}, threads;

@@ -28,7 +28,7 @@
 
 namespace {
 
-constexpr const char* kVersion = "acodrill 0.1.0";
+constexpr const char* kVersion = "acodrill " ACO_VERSION;
 
 struct SolverArgs {
   int threads = 0;
@@ -430,6 +430,7 @@ int main(int argc, char** argv) {
                "  acodrill tsp pcb442.tsp --time-limit 1\n",
                "acodrill"};
   cli.set_version_flag("--version", kVersion);
+  cli.set_help_all_flag("--help-all", "Print the help of every command and exit (the man page is made from it)");
   cli.require_subcommand(1);
   bool quiet = false;
 

@@ -40,7 +40,7 @@ std::string write_gerber(const std::vector<gcode::ToolPass>& passes, const std::
   std::string src;
   for (char c : source) src += (c == '*' || c == '%' || static_cast<unsigned char>(c) < 32) ? '_' : c;
   out << "G04 Drill order optimized by acodrill from " << src << "*\n";
-  out << "%TF.GenerationSoftware,acodrill,acodrill,0.1.0*%\n";
+  out << "%TF.GenerationSoftware,acodrill,acodrill," << ACO_VERSION << "*%\n";
   if (!file_function.empty()) out << "%TF.FileFunction," << file_function << "*%\n";
   out << "%TF.FilePolarity,Positive*%\n%FSLAX46Y46*%\n%MOMM*%\n";
   for (std::size_t i = 0; i < passes.size(); ++i) {

@@ -1,0 +1,68 @@
+# Installation: the programs, the public headers and libraries, and a CMake
+# package, so that another project can
+#   find_package(acodrill 0.1 CONFIG REQUIRED)
+#   target_link_libraries(x PRIVATE aco::aco)
+# and the Debian package built from the same rules by CPack (scripts/package).
+include(CMakePackageConfigHelpers)
+
+set(ACO_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/acodrill)
+
+install(TARGETS acodrill acobench RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+install(TARGETS aco_geometry aco aco_dxf aco_gcode aco_formats
+        EXPORT acodrillTargets
+        ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
+        INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+foreach(dir libaco dxf gcode formats)
+  install(DIRECTORY ${PROJECT_SOURCE_DIR}/${dir}/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+endforeach()
+install(EXPORT acodrillTargets NAMESPACE aco:: DESTINATION ${ACO_CMAKE_DIR})
+configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/acodrillConfig.cmake.in
+                              ${PROJECT_BINARY_DIR}/acodrillConfig.cmake INSTALL_DESTINATION ${ACO_CMAKE_DIR})
+# 0.x: only the same minor version promises the same API.
+write_basic_package_version_file(${PROJECT_BINARY_DIR}/acodrillConfigVersion.cmake COMPATIBILITY SameMinorVersion)
+install(FILES ${PROJECT_BINARY_DIR}/acodrillConfig.cmake ${PROJECT_BINARY_DIR}/acodrillConfigVersion.cmake
+        DESTINATION ${ACO_CMAKE_DIR})
+
+# Man pages made from the programs' own --help by help2man (Debian), so they
+# never drift from the options; skipped with a note where help2man is missing.
+find_program(ACO_HELP2MAN help2man)
+if(ACO_HELP2MAN)
+  set(man_pages)
+  foreach(prog acodrill acobench)
+    set(page ${PROJECT_BINARY_DIR}/man/${prog}.1)
+    set(gz ${page}.gz)
+    if(prog STREQUAL "acodrill")
+      set(what "order drill holes for the shortest spindle travel and write the G-code")
+      set(help_option --help-option=--help-all)  # every command's options, not only the list of commands
+    else()
+      set(help_option --help-option=--help)
+      set(what "benchmark the ant colony over algorithms, parameters and threads")
+    endif()
+    add_custom_command(OUTPUT ${page} ${gz}
+      COMMAND ${CMAKE_COMMAND} -E make_directory ${PROJECT_BINARY_DIR}/man
+      COMMAND ${ACO_HELP2MAN} --no-info --no-discard-stderr --section 1 --name "${what}" ${help_option} --output ${page}
+              $<TARGET_FILE:${prog}>
+      COMMAND gzip -9nkf ${page}  # Debian installs man pages compressed; -n keeps the package reproducible
+      DEPENDS ${prog} VERBATIM)
+    list(APPEND man_pages ${gz})
+  endforeach()
+  add_custom_target(man_pages ALL DEPENDS ${man_pages})
+  install(FILES ${man_pages} DESTINATION ${CMAKE_INSTALL_MANDIR}/man1)
+else()
+  message(STATUS "help2man not found: no man pages (scripts/package installs it)")
+endif()
+
+# Debian package (scripts/package): dependencies computed by dpkg-shlibdeps.
+set(CPACK_GENERATOR DEB)
+set(CPACK_PACKAGE_NAME acodrill)
+set(CPACK_PACKAGE_VERSION ${PROJECT_VERSION})
+set(CPACK_PACKAGE_CONTACT "acodrill developers <acodrill@localhost>")
+set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "orders drill holes with an ant colony and writes drilling G-code")
+set(CPACK_DEBIAN_PACKAGE_DESCRIPTION
+    "acodrill reads the drill holes of a part (DXF, Excellon, Gerber, CSV, XML),\n orders them so the spindle travels as little as possible with a\n thread-parallel ant colony, and writes HAAS, Fanuc or LinuxCNC programs\n with canned drilling cycles. Also installs the libaco solver and readers\n as static libraries with a CMake package.")
+set(CPACK_DEBIAN_PACKAGE_SECTION science)
+set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)  # acodrill_<version>_<arch>.deb
+set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
+set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
+set(CPACK_OUTPUT_FILE_PREFIX ${PROJECT_BINARY_DIR})
+include(CPack)
