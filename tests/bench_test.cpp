@@ -97,7 +97,7 @@ TEST(bench_test, thesis_preset_prints_tables_4_1_to_4_15_beside_the_published_ti
   }
   EXPECT_THAT(r.out, ::testing::HasSubstr("| 1 | ")) << "one processor row";
   EXPECT_THAT(r.out, ::testing::HasSubstr("| 39858 |")) << "the thesis's own time for experiment 5, set A, 1 processor";
-  EXPECT_THAT(r.out, ::testing::HasSubstr("acs vs best as"));
+  EXPECT_THAT(r.out, ::testing::HasSubstr("focused vs best as"));
 }
 
 TEST(bench_test, bad_grid_values_are_usage_errors) {

@@ -42,7 +42,7 @@ int main(int argc, char** argv) {
                "  acobench --preset thesis --quick --out thesis.csv     the thesis's experiments 1-5, tables 4.1-4.15\n",
                "acobench"};
   cli.set_version_flag("--version", std::string("acobench ") + ACO_VERSION);
-  std::vector<std::string> instances, algorithms{"acs"}, local_search{"2opt+oropt"};
+  std::vector<std::string> instances, algorithms{"focused"}, local_search{"2opt+oropt"};
   std::vector<double> alphas{1.0}, betas{-1.0}, rhos{-1.0}, time_limits{0.0};
   std::vector<int> ants{0}, iterations{0}, threads;
   int seeds = 1;
@@ -50,7 +50,7 @@ int main(int argc, char** argv) {
   bool quick = false;
   double budget = 0;
   cli.add_option("--instances", instances, "Inputs acodrill reads (TSPLIB, DXF, Excellon, CSV, XML), comma-separated")->delimiter(',');
-  cli.add_option("--algorithm", algorithms, "as, mmas, acs, or baselines input, nn, greedy, raster, nn2opt")->delimiter(',');
+  cli.add_option("--algorithm", algorithms, "focused (default), acs, mmas, as, or baselines input, nn, greedy, raster, nn2opt")->delimiter(',');
   cli.add_option("--alpha", alphas, "Pheromone weights")->delimiter(',');
   cli.add_option("--beta", betas, "Heuristic weights (default per algorithm)")->delimiter(',');
   cli.add_option("--rho", rhos, "Evaporation rates (default per algorithm)")->delimiter(',');
@@ -117,7 +117,7 @@ int main(int argc, char** argv) {
           }
         }
         // ... and beside it, in the same run, what acodrill does by default, and nearest neighbour.
-        for (const char* alg : {"acs", "nn2opt", "nn"}) {
+        for (const char* alg : {"focused", "nn2opt", "nn"}) {
           for (int s = 1; s <= reps; ++s) {
             app::BenchCell c;
             c.instance = loaded.back().path;
@@ -159,9 +159,9 @@ int main(int argc, char** argv) {
       }
     }
     for (const Job& j : jobs) {
-      static const std::set<std::string> known = {"as", "mmas", "acs", "input", "nn", "greedy", "raster", "nn2opt"};
+      static const std::set<std::string> known = {"as", "mmas", "acs", "focused", "input", "nn", "greedy", "raster", "nn2opt"};
       if (!known.count(j.cell.algorithm)) {
-        throw app::UserError("--algorithm: \"" + j.cell.algorithm + "\" is none of as, mmas, acs, input, nn, greedy, raster, nn2opt");
+        throw app::UserError("--algorithm: \"" + j.cell.algorithm + "\" is none of as, mmas, acs, focused, input, nn, greedy, raster, nn2opt");
       }
       if (j.cell.alpha < 0 || (j.cell.rho != -1.0 && !(j.cell.rho > 0 && j.cell.rho <= 1)) || j.cell.threads < 1 ||
           j.cell.time_limit_s < 0 || j.cell.ants < 0 || j.cell.iterations < 0) {

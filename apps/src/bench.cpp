@@ -61,7 +61,7 @@ std::string key(const BenchRun& r) { return key_without_threads(r) + "|" + std::
 aco::Params solver_params(const std::string& algorithm, const std::string& local_search) {
   aco::Params p;
   auto alg = aco::algorithm_from_string(algorithm);
-  if (!alg) throw UserError("--algorithm must be one of as, mmas, acs (got \"" + algorithm + "\")");
+  if (!alg) throw UserError("--algorithm must be one of focused, acs, mmas, as (got \"" + algorithm + "\")");
   auto ls = aco::local_search_from_string(local_search);
   if (!ls) throw UserError("--local-search must be one of none, 2opt, 2opt+oropt (got \"" + local_search + "\")");
   p.algorithm = *alg;
@@ -310,12 +310,12 @@ std::string thesis_tables(const std::vector<BenchRun>& runs, const std::string& 
     lengths[{e->second, column}].push_back(r.length);
   }
   if (!lengths.empty()) {
-    const std::vector<std::string> columns = {"as A", "as B", "as C", "acs", "nn2opt", "nn"};
+    const std::vector<std::string> columns = {"as A", "as B", "as C", "focused", "nn2opt", "nn"};
     out << "Closed-tour length in mm (median over runs): the thesis's Ant System (sets A, B, C), acodrill's\n"
         << "default (ACS with 2-opt and Or-opt, same iterations), nearest neighbour with 2-opt, nearest neighbour\n\n"
         << "| experiment | holes |";
     for (const auto& c : columns) out << " " << c << " |";
-    out << " acs vs best as |\n|---:|---:|";
+    out << " focused vs best as |\n|---:|---:|";
     for (std::size_t i = 0; i <= columns.size(); ++i) out << "---:|";
     out << "\n";
     for (int exp = 1; exp <= 5; ++exp) {
@@ -323,7 +323,7 @@ std::string thesis_tables(const std::vector<BenchRun>& runs, const std::string& 
       for (const auto& [n, e] : experiment_of) if (e == exp) holes = n;
       bool any = false;
       std::string row = "| " + std::to_string(exp) + " | " + std::to_string(holes) + " |";
-      double best_as = 1e300, acs = 0;
+      double best_as = 1e300, default_colony = 0;
       for (const auto& c : columns) {
         auto it = lengths.find({exp, c});
         if (it == lengths.end()) {
@@ -333,11 +333,11 @@ std::string thesis_tables(const std::vector<BenchRun>& runs, const std::string& 
         any = true;
         const double m = median(it->second);
         if (c.rfind("as ", 0) == 0) best_as = std::min(best_as, m);
-        if (c == "acs") acs = m;
+        if (c == "focused") default_colony = m;
         row += " " + fmt(m, 1) + " |";
       }
       if (!any) continue;
-      row += (acs > 0 && best_as < 1e300) ? " " + fmt(100.0 * (acs - best_as) / best_as, 2) + " % |" : " - |";
+      row += (default_colony > 0 && best_as < 1e300) ? " " + fmt(100.0 * (default_colony - best_as) / best_as, 2) + " % |" : " - |";
       out << row << "\n";
     }
     out << "\n";

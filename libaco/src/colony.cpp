@@ -47,6 +47,18 @@ using detail::Space;
 // Up to this many holes the candidate list is every other hole (the exact Ant System).
 constexpr std::size_t kFullListLimit = 800;
 
+// FocusedAcs, chosen by measurement on pcb442, pcb1173 and pcb3038 (median gap
+// at fixed budgets, docs/benchmarks.md): at each step of its walk an ant
+// leaves the reference route with this probability (until it has made
+// focus_edges new edges), so its changes cluster in a stretch of some
+// focus_edges / kDeviate holes instead of being strewn over the whole route,
+// and local search can turn them into an improvement.
+constexpr double kDeviate = 0.2;
+// After this many iterations in which no ant improved the reference, the best
+// route is kicked by a double bridge within kKickSpan consecutive holes.
+constexpr int kKickAfter = 30;
+constexpr std::size_t kKickSpan = 50;
+
 class Clock {
  public:
   double seconds() const {
@@ -68,6 +80,13 @@ struct alignas(64) AntWork {
   std::vector<double> weight;         // roulette weights over candidates
   std::unique_ptr<detail::BucketGrid> grid;  // candidate-list mode: nearest unvisited hole
   double length = 0.0;
+  // Focused construction: visited marks by stamp (no O(n) clear per ant), the
+  // next unvisited position of the reference route (union-find with path
+  // halving), and the ends of the edges the ant made new.
+  std::vector<std::uint32_t> mark;
+  std::uint32_t stamp = 0;
+  std::vector<std::uint32_t> skip;
+  std::vector<HoleIndex> seeds;
 };
 
 class Colony {
@@ -130,6 +149,9 @@ class Colony {
     }
   }
   void construct(AntWork& w, Rng& rng, bool acs);
+  void construct_focused(AntWork& w, Rng& rng) const;
+  HoleIndex choose_focused(HoleIndex cur, const AntWork& w, Rng& rng, HoleIndex exclude) const;
+  void set_reference(const std::vector<HoleIndex>& route);
   HoleIndex choose_next(HoleIndex cur, AntWork& w, Rng& rng, bool acs);
   HoleIndex nearest_unvisited(HoleIndex cur, const AntWork& w) const;
   void deposit(const std::vector<HoleIndex>& route, double amount);
@@ -152,7 +174,121 @@ class Colony {
   std::vector<double> dense_choice_;
   std::vector<double> start_weight_;  // open path: eta(start, h)^beta
   double tau0_ = 0.0;
+  // FocusedAcs: the reference route the ants start from (the best so far),
+  // and each node's position in it.
+  std::vector<HoleIndex> ref_route_;
+  std::vector<std::uint32_t> ref_pos_;
+  double ref_len_ = 0.0;
+  int ref_stall_ = 0;  // iterations since the reference last improved
+  std::unique_ptr<LocalSearcher> kick_searcher_;
 };
+
+void Colony::set_reference(const std::vector<HoleIndex>& route) {
+  ref_route_ = route;
+  ref_pos_.resize(route.size());
+  for (std::size_t i = 0; i < route.size(); ++i) ref_pos_[route[i]] = static_cast<std::uint32_t>(i);
+}
+
+HoleIndex Colony::choose_focused(HoleIndex cur, const AntWork& w, Rng& rng, HoleIndex exclude) const {
+  // ACS's pseudo-random proportional rule over the unvisited candidates, with
+  // tau^alpha * eta^beta computed here: a focused ant looks at few rows, so
+  // refreshing all n*k of them every iteration would cost more than it saves.
+  const HoleIndex* c = cand_.of(cur);
+  const double* tau = tau_.data() + idx(cur, 0);
+  const double* eb = eta_beta_.data() + idx(cur, 0);
+  double weight[64];
+  const int k = std::min(k_, 64);
+  double total = 0.0;
+  int best_r = -1;
+  for (int r = 0; r < k; ++r) {
+    const bool free = w.mark[c[r]] != w.stamp && c[r] != exclude;
+    const double v = free ? (p_.alpha == 1.0 ? tau[r] : std::pow(tau[r], p_.alpha)) * eb[r] : 0.0;
+    weight[r] = v;
+    total += v;
+    if (free && (best_r < 0 || v > weight[best_r])) best_r = r;
+  }
+  if (best_r < 0) return n_ + 1;  // every candidate visited
+  if (rng.uniform() < p_.q0 || !(total > 0.0)) return c[best_r];
+  double x = rng.uniform() * total;
+  for (int r = 0; r < k; ++r) {
+    x -= weight[r];
+    if (x < 0.0 && weight[r] > 0.0) return c[r];
+  }
+  return c[best_r];
+}
+
+void Colony::construct_focused(AntWork& w, Rng& rng) const {
+  // Walk from a random node of the reference route R. While the ant has made
+  // fewer than focus_edges new edges it chooses by the ACS rule; after that it
+  // copies R, skipping what it has visited. Every edge that is not R's is new,
+  // and its two ends seed the local search.
+  const std::size_t m = ref_route_.size();  // nodes, V included for an open path
+  if (w.mark.size() != m) {
+    w.mark.assign(m, 0);
+    w.stamp = 0;
+  }
+  if (++w.stamp == 0) {
+    std::fill(w.mark.begin(), w.mark.end(), 0);
+    w.stamp = 1;
+  }
+  w.skip.resize(m);
+  std::iota(w.skip.begin(), w.skip.end(), 0u);
+  // The first unvisited position of R at or after p (cyclically).
+  auto next_free = [&](std::uint32_t p) {
+    while (w.skip[p] != p) {
+      w.skip[p] = w.skip[w.skip[p]];
+      p = w.skip[p];
+    }
+    return p;
+  };
+  auto visit = [&](HoleIndex h) {
+    w.mark[h] = w.stamp;
+    const std::uint32_t p = ref_pos_[h];
+    w.skip[p] = static_cast<std::uint32_t>(p + 1 == m ? 0 : p + 1);
+    w.route.push_back(h);
+  };
+  w.route.clear();
+  w.seeds.clear();
+  HoleIndex cur = ref_route_[rng.below(static_cast<std::uint32_t>(m))];
+  const HoleIndex first = cur;
+  visit(cur);
+  int changes = 0;
+  // Each ant draws its bound from focus_edges x {1/2, 1, 2, 4}: small changes
+  // polish, large ones reach out of deep local optima; no single bound served
+  // every instance (measured: 8 stalls d1291, 32 stalls pcb1173).
+  const int bound = std::max(1, (p_.focus_edges << rng.below(4)) / 2);
+  const std::uint32_t last_pos = static_cast<std::uint32_t>(m - 1);
+  for (std::size_t step = 1; step < m; ++step) {
+    const std::uint32_t pc = ref_pos_[cur];
+    const HoleIndex follow = ref_route_[pc == last_pos ? 0 : pc + 1];
+    HoleIndex next = n_ + 1;
+    if (changes < bound && cur < n_) {
+      // Deviate from R here with probability p_dev (the choice then excludes
+      // R's own edge); where R's next hole is already visited a new edge must
+      // be made anyway, and the same rule picks it.
+      const bool follow_free = w.mark[follow] != w.stamp;
+      if (!follow_free || rng.uniform() < kDeviate) next = choose_focused(cur, w, rng, follow);
+      else next = follow;
+    }
+    if (next > n_) next = ref_route_[next_free(pc == last_pos ? 0 : pc + 1)];
+    if (next != follow) {  // a new edge: its ends, in pairs (V among them is skipped later)
+      ++changes;
+      w.seeds.push_back(cur);
+      w.seeds.push_back(next);
+    }
+    visit(next);
+    cur = next;
+  }
+  if (ref_route_[ref_pos_[cur] == last_pos ? 0 : ref_pos_[cur] + 1] != first) {
+    w.seeds.push_back(cur);
+    w.seeds.push_back(first);
+  }
+  // An open path keeps V at position 0.
+  if (space_.open()) {
+    const auto v = std::find(w.route.begin(), w.route.end(), n_);
+    std::rotate(w.route.begin(), v, w.route.end());
+  }
+}
 
 HoleIndex Colony::nearest_unvisited(HoleIndex cur, const AntWork& w) const {
   // Every candidate is visited: take the nearest unvisited hole, which is the
@@ -333,10 +469,17 @@ Solution Colony::run() {
       mmas_limits(c_nn);
       tau0_ = tau_max;
       break;
-    case Algorithm::AntColonySystem: tau0_ = 1.0 / (n_ * c_nn); break;
+    case Algorithm::AntColonySystem:
+    case Algorithm::FocusedAcs: tau0_ = 1.0 / (n_ * c_nn); break;
   }
   set_all_tau(tau0_);
-  refresh_choice();
+  const bool focused = p_.algorithm == Algorithm::FocusedAcs;
+  if (!focused) refresh_choice();  // focused ants weigh their few rows as they go
+  if (focused) {
+    set_reference(best_route);
+    if (use_ls) kick_searcher_ = std::make_unique<LocalSearcher>(space_, cand_);
+  }
+  ref_len_ = best_len;
 
   const bool acs = p_.algorithm == Algorithm::AntColonySystem;
   std::vector<AntWork> work(static_cast<std::size_t>(p_.ants));
@@ -356,8 +499,13 @@ Solution Colony::run() {
     detail::parallel_slots(p_.ants, p_.threads, sol.thread_busy_s, [&](int k) {
       Rng rng(p_.seed, static_cast<std::uint64_t>(it), static_cast<std::uint64_t>(k));
       AntWork& w = work[static_cast<std::size_t>(k)];
-      construct(w, rng, acs);
-      if (use_ls) searchers[static_cast<std::size_t>(k)].improve(w.route, or_opt);
+      if (focused) {
+        construct_focused(w, rng);
+        if (use_ls) searchers[static_cast<std::size_t>(k)].improve_from(w.route, or_opt, w.seeds);
+      } else {
+        construct(w, rng, acs);
+        if (use_ls) searchers[static_cast<std::size_t>(k)].improve(w.route, or_opt);
+      }
       w.length = space_.route_cost(w.route);
     });
     // Deterministic reduction: shortest, ties to the lowest ant index.
@@ -368,6 +516,49 @@ Solution Colony::run() {
     const double ib_len = work[ib].length;
     ++since_improvement;
     ++since_restart;
+    if (focused) {
+      ++ref_stall_;
+      const bool better = ib_len < ref_len_ - 1e-9;
+      const bool walk = ref_stall_ >= kKickAfter;
+      if (better || (ib_len <= ref_len_ + 1e-9 && work[ib].route != ref_route_)) {
+        // The reference moves to the iteration's best when it is better or as
+        // good (across a plateau).
+        ref_len_ = ib_len;
+        set_reference(work[ib].route);
+        if (better) ref_stall_ = 0;
+      } else if (walk && kick_searcher_) {
+        // Stuck: every ant's changes were repaired back to the reference. Kick
+        // the best route with a local double bridge (segments A B C D -> A C B D
+        // within a short stretch), repair that by local search and go on from
+        // there even if it is worse; the best so far is kept apart.
+        Rng krng(p_.seed ^ 0x9E3779B97F4A7C15ULL, static_cast<std::uint64_t>(it), 0xFFFF);
+        std::vector<HoleIndex> r = best_route;  // kick the best, not a wandering reference
+        const std::size_t mm = r.size();
+        const std::size_t span = std::min<std::size_t>(kKickSpan, mm - 2);
+        if (span >= 8) {
+          std::size_t a = space_.open() ? 1 + krng.below(static_cast<std::uint32_t>(mm - span - 1)) : krng.below(static_cast<std::uint32_t>(mm - span));
+          std::size_t cut[3];
+          for (auto& c : cut) c = 1 + krng.below(static_cast<std::uint32_t>(span - 1));
+          std::sort(cut, cut + 3);
+          if (cut[0] < cut[1] && cut[1] < cut[2]) {
+            const std::size_t p1 = a + cut[0], p2 = a + cut[1], p3 = a + cut[2];
+            // [a+1..p1] [p1+1..p2] [p2+1..p3] -> swap the middle two blocks
+            std::rotate(r.begin() + static_cast<long>(p1 + 1), r.begin() + static_cast<long>(p2 + 1), r.begin() + static_cast<long>(p3 + 1));
+            std::vector<HoleIndex> seeds = {r[a], r[a + 1], r[p1], r[p1 + 1], r[p2], r[p2 + 1], r[p3], r[(p3 + 1) % mm]};
+            kick_searcher_->improve_from(r, or_opt, seeds);
+            ref_len_ = space_.route_cost(r);
+            set_reference(r);
+            if (ref_len_ < best_len - 1e-9) {
+              best_len = ref_len_;
+              best_route = r;
+              since_improvement = 0;
+              sol.trace.push_back({it, clock.seconds(), best_len});
+            }
+          }
+        }
+        ref_stall_ = 0;
+      }
+    }
     if (ib_len < best_len - 1e-9) {
       best_len = ib_len;
       best_route = work[ib].route;
@@ -405,11 +596,25 @@ Solution Colony::run() {
         }
         break;
       }
-      case Algorithm::AntColonySystem: {
+      case Algorithm::AntColonySystem:
+      case Algorithm::FocusedAcs: {
         // Local update, deferred to the barrier and applied in ant order so the
         // result does not depend on thread timing: tau = (1-xi) tau + xi tau0.
+        // A focused ant's route is the reference but for its new edges, so only
+        // those are updated (the reference's edges get the global update).
         constexpr double xi = 0.1;
         for (const AntWork& w : work) {
+          if (!focused) break;
+          for (std::size_t i = 0; i + 1 < w.seeds.size(); i += 2) {
+            if (w.seeds[i] >= n_ || w.seeds[i + 1] >= n_) continue;  // V's edges carry no pheromone
+            for (auto [x, y] : {std::pair{w.seeds[i], w.seeds[i + 1]}, std::pair{w.seeds[i + 1], w.seeds[i]}}) {
+              const int r = rank_of(x, y);
+              if (r >= 0) tau_[idx(x, r)] = (1.0 - xi) * tau_[idx(x, r)] + xi * tau0_;
+            }
+          }
+        }
+        for (const AntWork& w : work) {
+          if (focused) break;
           const std::size_t mm = w.route.size();
           for (std::size_t i = 0; i < mm; ++i) {
             const HoleIndex a = w.route[i], b = w.route[(i + 1) % mm];
@@ -433,7 +638,7 @@ Solution Colony::run() {
         break;
       }
     }
-    refresh_choice();
+    if (!focused) refresh_choice();
 
     const double now = clock.seconds();
     if (p_.on_iteration) p_.on_iteration(Progress{it, now, best_len});
@@ -472,21 +677,30 @@ Params resolve(const Params& in, std::size_t n) {
       if (p.ants <= 0) p.ants = ls ? 10 : static_cast<int>(std::clamp<std::size_t>(n, 1, 100));
       break;
     case Algorithm::AntColonySystem:
+    case Algorithm::FocusedAcs:
       if (p.beta < 0) p.beta = 2.0;
       if (p.rho < 0) p.rho = 0.1;
       if (p.ants <= 0) p.ants = 10;
       break;
   }
+  if (p.focus_edges <= 0) p.focus_edges = 16;
   if (p.candidates <= 0) p.candidates = ls ? 12 : 20;
   // Without a budget, the work grows with n: 300 iterations up to a few
-  // thousand holes, fewer beyond (2e6 / n: 20 at 100 000, 3 at a million).
+  // thousand holes, fewer beyond (2e6 / n: 20 at 100 000, 3 at a million). A
+  // focused iteration costs a small part of a whole-route one, so it gets ten
+  // times as many, and a longer patience (kicks come every kKickAfter).
+  const bool focused = p.algorithm == Algorithm::FocusedAcs;
   if (p.iterations <= 0) {
+    const double work = focused ? 2e7 : 2e6;
     p.iterations = p.time_limit_s > 0 ? std::numeric_limits<int>::max()
-                                      : static_cast<int>(std::clamp<double>(2e6 / std::max<std::size_t>(n, 1), 3, 300));
+                                      : static_cast<int>(std::clamp<double>(work / std::max<std::size_t>(n, 1), focused ? 20 : 3,
+                                                                            focused ? 3000 : 300));
   }
   // Stop early on stagnation only when the user set no budget of their own:
   // --iterations N means N iterations (the thesis's runs count on it).
-  if (p.stall_iterations == 0) p.stall_iterations = (p.time_limit_s > 0 || in.iterations > 0) ? -1 : 100;
+  if (p.stall_iterations == 0) {
+    p.stall_iterations = (p.time_limit_s > 0 || in.iterations > 0) ? -1 : (focused ? 600 : 100);
+  }
   if (p.threads <= 0) p.threads = std::max(1, omp_get_num_procs());
   return p;
 }

@@ -199,6 +199,23 @@ void LocalSearcher::improve(std::vector<HoleIndex>& route, bool or_opt) {
   route.assign(route_.begin(), route_.end());
 }
 
+void LocalSearcher::improve_from(std::vector<HoleIndex>& route, bool or_opt, const std::vector<HoleIndex>& seeds) {
+  m_ = route.size();
+  if (m_ < 4 || cand_.k == 0 || seeds.empty()) return;
+  route_.assign(route.begin(), route.end());
+  for (std::size_t i = 0; i < m_; ++i) pos_[route_[i]] = i;
+  // Whole-route search: a focused ant makes few moves, so even at a million
+  // holes the O(n) reversal of a few of them costs less than windows would.
+  windowed_ = false;
+  lo_ = 0;
+  hi_ = m_;
+  queue_.clear();
+  head_ = 0;
+  for (HoleIndex node : seeds) push(node);
+  run_queue(or_opt);
+  route.assign(route_.begin(), route_.end());
+}
+
 void LocalSearcher::run_queue(bool or_opt) {
   while (head_ < queue_.size()) {
     const HoleIndex a = queue_[head_++];

@@ -23,6 +23,10 @@ class alignas(64) LocalSearcher {
   // on a million holes whole-route search is quadratic; windows keep every
   // move's cost bounded and the pass linear.
   void improve(std::vector<HoleIndex>& route, bool or_opt);
+  // The same, looking only where something changed: the queue starts with
+  // `seeds` (the ends of an ant's new edges) and grows only where moves are
+  // made, so the search costs what the ant changed, plus O(n) to load the route.
+  void improve_from(std::vector<HoleIndex>& route, bool or_opt, const std::vector<HoleIndex>& seeds);
   static constexpr std::size_t kWindow = 100000;
 
  private:

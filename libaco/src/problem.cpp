@@ -57,6 +57,7 @@ const char* to_string(Algorithm algorithm) {
     case Algorithm::AntSystem: return "as";
     case Algorithm::MaxMinAntSystem: return "mmas";
     case Algorithm::AntColonySystem: return "acs";
+    case Algorithm::FocusedAcs: return "focused";
   }
   return "?";
 }
@@ -71,7 +72,7 @@ const char* to_string(LocalSearch local_search) {
 }
 
 std::optional<Algorithm> algorithm_from_string(const std::string& name) {
-  for (Algorithm a : {Algorithm::AntSystem, Algorithm::MaxMinAntSystem, Algorithm::AntColonySystem}) {
+  for (Algorithm a : {Algorithm::AntSystem, Algorithm::MaxMinAntSystem, Algorithm::AntColonySystem, Algorithm::FocusedAcs}) {
     if (name == to_string(a)) return a;
   }
   return std::nullopt;
@@ -98,6 +99,7 @@ void Params::validate() const {
   if (threads > 1024) bad("--threads must be at most 1024");
   if (!(q0 >= 0.0 && q0 <= 1.0)) bad("q0 must be in [0, 1]");
   if (candidates < 0) bad("--candidates must be >= 1");
+  if (focus_edges < 0) bad("--focus-edges must be >= 1");
 }
 
 }  // namespace aco
