@@ -23,6 +23,9 @@ def main():
       "(about 25 minutes on 2 cores). Raw data: `docs/bench/`.\n")
     w(f"Machine: {machine.get('cpu')}, {machine.get('cores')} cores, {machine.get('memory')}, {machine.get('os')}, "
       f"{machine.get('compiler')}; commit {machine.get('commit')}.\n")
+    if machine.get("sections") and machine.get("sections") != "thesis targets gap speedup micro":
+        w(f"That run measured these sections: {machine.get('sections')}; the others keep the CSVs of an earlier "
+          "run (`git log docs/bench`).\n")
 
     # Gap at fixed budgets, beside the best published parallel ACO (issue 12).
     path = os.path.join(d, "tsp-targets.csv")
