@@ -289,3 +289,19 @@ TEST(excellon_test, a_tool_zero_defined_in_the_header_drills) {
   EXPECT_EQ(error_of("M48\nMETRIC\nT1C0.8\n%\nT1\nX5.0Y6.0\nT0\nX1.0Y1.0\nM30\n"),
             "t.drl:8: drill hit with no tool loaded (T0)");
 }
+
+// The contract: `acodrill holes` prints every hit of an Excellon file — slots
+// are listed only when asked (--slots drill), so the rows are the file's hits.
+TEST(excellon_test, the_holes_command_lists_the_hits_and_drills_slots_only_when_asked) {
+  for (const char* name : {"handmade_g85_slot.drl", "mentor_jj1_metric_tz_route.drl"}) {
+    const std::string path = data(std::string("real-excellon/") + name);
+    auto r = testutil::acodrill_run("holes " + shell_quote(path) + " -q");
+    ASSERT_EQ(r.code, 0) << r.err;
+    std::set<std::pair<long long, long long>> distinct;
+    for (const Hit& w : hits_csv(slurp(path + ".hits.csv"))) distinct.insert({std::llround(w.x * 1e5), std::llround(w.y * 1e5)});
+    EXPECT_EQ(testutil::count_lines(r.out) - 1, static_cast<int>(distinct.size())) << name;
+    auto drilled = testutil::acodrill_run("holes " + shell_quote(path) + " -q --slots drill");
+    ASSERT_EQ(drilled.code, 0);
+    EXPECT_GT(testutil::count_lines(drilled.out), testutil::count_lines(r.out)) << name << ": its slots as rows of holes";
+  }
+}

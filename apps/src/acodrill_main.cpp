@@ -99,9 +99,9 @@ void add_input_options(CLI::App* cmd, InputArgs& a) {
   cmd->add_option("--max-holes", a.max_holes, "Refuse inputs with more holes than this (default 5000000)")
       ->check(CLI::Range(std::size_t{1}, std::size_t{100'000'000}));
   cmd->add_option("--slots", a.slots,
-                  "drill (default): each slot (Excellon G85 or routed oval, Gerber obround) becomes a row of holes of "
+                  "drill (default of plan and verify): each slot (Excellon G85 or routed oval, Gerber obround) becomes a row of holes of "
                   "its width, ends first then midpoints so the drill never cuts into one fresh hole alone; skip: "
-                  "not drilled, and named in the program header, report and setup sheet");
+                  "not drilled, and named in the program header, report and setup sheet (default of holes, which lists what the input holds)");
   cmd->add_option("--slot-pitch", a.slot_pitch, "Distance between a drilled slot's holes in mm (default: a quarter of its width)")
       ->check(CLI::Range(0.0, 1e4));
   cmd->add_option("--apertures", a.apertures,
@@ -136,7 +136,9 @@ app::InputOptions to_input_options(const InputArgs& a) {
   return o;
 }
 
-void print_warnings(const app::LoadedHoles& loaded, const std::string& path, bool quiet) {
+// `skipped_label` says what became of what the input holds but the holes leave out.
+void print_warnings(const app::LoadedHoles& loaded, const std::string& path, bool quiet,
+                    const char* skipped_label = "NOT DRILLED") {
   if (quiet) return;
   std::string summary = std::to_string(loaded.holes.size()) + " holes from " + std::string(formats::to_string(loaded.format));
   if (loaded.duplicates_removed) summary += ", " + std::to_string(loaded.duplicates_removed) + " duplicates removed";
@@ -147,7 +149,7 @@ void print_warnings(const app::LoadedHoles& loaded, const std::string& path, boo
   }
   if (!loaded.skipped.empty()) {
     const app::Note& n = loaded.skipped.front();
-    summary += "; NOT DRILLED: " + std::to_string(loaded.skipped.size()) + " feature(s), first: " +
+    summary += std::string("; ") + skipped_label + ": " + std::to_string(loaded.skipped.size()) + " feature(s), first: " +
                (n.line ? "line " + std::to_string(n.line) + ": " : "") + n.message;
   }
   std::size_t warnings = 0;
@@ -196,7 +198,7 @@ int cmd_holes(const std::string& input, const InputArgs& in_args, const std::str
   const std::string out = app::holes_csv(loaded.holes);
   std::cout << out;
   std::cout.flush();
-  print_warnings(loaded, input, quiet);
+  print_warnings(loaded, input, quiet, "not listed (slots and routes; plan drills slots unless --slots skip)");
   return 0;
 }
 
@@ -496,7 +498,10 @@ int main(int argc, char** argv) {
   holes_cmd->add_option("input", holes_input, "Input file or - for stdin")->required();
   holes_cmd->add_option("--format", holes_format, "Output format: csv (the default)");
   holes_cmd->add_flag("-q,--quiet", quiet, "No summary on stderr");
+  // `holes` lists the holes the input holds (the contract: every hit, every
+  // round flash), so slots are not made into rows of holes here unless asked.
   InputArgs holes_in;
+  holes_in.slots = "skip";
   add_input_options(holes_cmd, holes_in);
 
   std::string tsp_input, tsp_tour;
