@@ -168,24 +168,32 @@ bool LocalSearcher::try_or_opt(HoleIndex a) {
   return false;
 }
 
+void LocalSearcher::load(const std::vector<HoleIndex>& route) {
+  route_.assign(route.begin(), route.end());
+  for (std::size_t i = 0; i < m_; ++i) pos_[route_[i]] = i;
+}
+
+void LocalSearcher::search_whole_route_from(const HoleIndex* first, const HoleIndex* last, bool or_opt) {
+  windowed_ = false;
+  lo_ = 0;
+  hi_ = m_;
+  queue_.clear();
+  head_ = 0;
+  for (const HoleIndex* node = first; node != last; ++node) push(*node);
+  run_queue(or_opt);
+}
+
 void LocalSearcher::improve(std::vector<HoleIndex>& route, bool or_opt) {
   m_ = route.size();
   if (m_ < 4 || cand_.k == 0) return;
-  route_.assign(route.begin(), route.end());
-  pos_.assign(m_ + 1, 0);
-  for (std::size_t i = 0; i < m_; ++i) pos_[route_[i]] = i;
+  load(route);
   std::fill(queued_.begin(), queued_.end(), 0);
-  windowed_ = m_ > kWindow;
-  if (!windowed_) {
-    lo_ = 0;
-    hi_ = m_;
-    queue_.clear();
-    head_ = 0;
-    for (HoleIndex node : route_) push(node);
-    run_queue(or_opt);
+  if (m_ <= kWindow) {
+    search_whole_route_from(route_.data(), route_.data() + m_, or_opt);
   } else {
     // Windows overlap by half, so a move across one window's border lies
     // inside the next; each is searched until no move in it gains.
+    windowed_ = true;
     for (std::size_t lo = 0; lo + 2 < m_; lo += kWindow / 2) {
       lo_ = lo;
       hi_ = std::min(m_ - 1, lo + kWindow);
@@ -202,17 +210,10 @@ void LocalSearcher::improve(std::vector<HoleIndex>& route, bool or_opt) {
 void LocalSearcher::improve_from(std::vector<HoleIndex>& route, bool or_opt, const std::vector<HoleIndex>& seeds) {
   m_ = route.size();
   if (m_ < 4 || cand_.k == 0 || seeds.empty()) return;
-  route_.assign(route.begin(), route.end());
-  for (std::size_t i = 0; i < m_; ++i) pos_[route_[i]] = i;
+  load(route);
   // Whole-route search: a focused ant makes few moves, so even at a million
   // holes the O(n) reversal of a few of them costs less than windows would.
-  windowed_ = false;
-  lo_ = 0;
-  hi_ = m_;
-  queue_.clear();
-  head_ = 0;
-  for (HoleIndex node : seeds) push(node);
-  run_queue(or_opt);
+  search_whole_route_from(seeds.data(), seeds.data() + seeds.size(), or_opt);
   route.assign(route_.begin(), route_.end());
 }
 

@@ -30,6 +30,8 @@ class alignas(64) LocalSearcher {
   static constexpr std::size_t kWindow = 100000;
 
  private:
+  void load(const std::vector<HoleIndex>& route);  // route_ and pos_ from `route` (m_ set)
+  void search_whole_route_from(const HoleIndex* first, const HoleIndex* last, bool or_opt);
   void run_queue(bool or_opt);
   bool in_window(std::size_t position) const { return position >= lo_ && position <= hi_; }
   bool try_two_opt(HoleIndex a);
