@@ -170,15 +170,6 @@ app::Origin parse_origin(const std::string& text) {
   return *origin;
 }
 
-// "ORIGIN: LOWER-LEFT OF HOLES; EXTENT X0.000..150.000 Y0.000..240.000 MM", in program units.
-std::string origin_comment(const app::Placement& p, gcode::Units units) {
-  const bool inch = units == gcode::Units::Inch;
-  auto c = [&](double mm) { return gcode::format_number(inch ? mm / 25.4 : mm, inch ? 4 : 3); };
-  const app::Extent& e = p.extent;
-  return "ORIGIN: " + app::describe(p.origin) + "; EXTENT X" + c(e.x_min) + ".." + c(e.x_max) + " Y" + c(e.y_min) +
-         ".." + c(e.y_max) + (inch ? " IN" : " MM");
-}
-
 // A drill file written back stays in the input's coordinates, registered with
 // the board's other layers, wherever program zero is.
 std::vector<gcode::ToolPass> in_input_coordinates(std::vector<gcode::ToolPass> passes, const app::Placement& placement) {
@@ -275,7 +266,7 @@ int cmd_plan(const PlanArgs& a, const SolverArgs& s, const InputArgs& in_args) {
           gcode::format_number(plan.optimized.travel_mm, 1) + " MM",
       "ORDER: ACODRILL " + std::string(aco::to_string(plan.solver.algorithm)) + " SEED " +
           std::to_string(plan.solver.seed),
-      origin_comment(placement, ps.units),
+      app::origin_comment(placement, ps.units),
       app::zero_comment(placement)};
   if (loaded.slots_drilled) {
     ps.header_comments.push_back("SLOTS: " + std::to_string(loaded.slots_drilled) + " DRILLED AS " +

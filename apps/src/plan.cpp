@@ -1,9 +1,9 @@
 #include "app/plan.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <limits>
-#include <charconv>
 #include <map>
 #include <nlohmann/json.hpp>
 
@@ -262,6 +262,14 @@ Placement place_holes(aco::HoleSet& holes, const Origin& origin) {
   }
   p.extent = extent_of(holes);
   return p;
+}
+
+std::string origin_comment(const Placement& p, gcode::Units units) {
+  const bool inch = units == gcode::Units::Inch;
+  auto c = [&](double mm) { return gcode::format_number(inch ? mm / 25.4 : mm, inch ? 4 : 3); };
+  const Extent& e = p.extent;
+  return "ORIGIN: " + describe(p.origin) + "; EXTENT X" + c(e.x_min) + ".." + c(e.x_max) + " Y" + c(e.y_min) + ".." +
+         c(e.y_max) + (inch ? " IN" : " MM");
 }
 
 std::string zero_comment(const Placement& p) {

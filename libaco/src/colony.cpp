@@ -110,7 +110,8 @@ class Colony {
     }
     if (k_ == static_cast<int>(n_) - 1 && n_ > 1) {
       rank_.assign(static_cast<std::size_t>(n_) * n_, -1);
-      dense_choice_.assign(static_cast<std::size_t>(n_) * n_, 0.0);
+      // Focused ants weigh their candidate rows directly and never read it.
+      if (p_.algorithm != Algorithm::FocusedAcs) dense_choice_.assign(static_cast<std::size_t>(n_) * n_, 0.0);
       for (HoleIndex i = 0; i < n_; ++i) {
         for (int r = 0; r < k_; ++r) rank_[static_cast<std::size_t>(i) * n_ + cand_.of(i)[r]] = r;
       }

@@ -99,6 +99,11 @@ struct Placement {
 // Moves the holes so that the origin's point becomes X0 Y0.
 Placement place_holes(aco::HoleSet& holes, const Origin& origin);
 
+// The program header comment that tells the operator where zero is and what
+// the holes span, in program units:
+// "ORIGIN: LOWER-LEFT OF HOLES; EXTENT X0.000..150.000 Y0.000..240.000 MM".
+std::string origin_comment(const Placement& placement, gcode::Units units);
+
 // The program header comment that records program zero in the input's
 // coordinates ("PROGRAM ZERO AT DRAWING X21.100 Y25.500 MM"), and its reader:
 // `verify --holes` moves the input holes by what the program states.
