@@ -121,7 +121,8 @@ std::vector<BadCase> catalogue() {
       // G-code for verify
       {"verify_unclosed_comment", "a.nc", "G0 X1 (oops\n", "verify {in}", "a.nc:1: unclosed comment"},
       {"verify_cycle_without_depth", "a.nc", "G0 X0 Y0 Z5\nG81 X1 Y1 R1 F10\n", "verify {in}", "a.nc:2: canned cycle without a depth"},
-      {"verify_bad_word", "a.nc", "G0 X1 #5\n", "verify {in}", "a.nc:1: unexpected character"},
+      {"verify_bad_word", "a.nc", "G0 X1 &5\n", "verify {in}", "a.nc:1: unexpected character"},
+      {"verify_parameter", "a.nc", "G0 X1 #5\n", "verify {in}", "a.nc:1: parameters and expressions"},
       // Paths and outputs
       {"missing_input", "", "", "plan {dir}/missing.dxf -o {out}", "missing.dxf: cannot read"},
       {"directory_as_input", "", "", "plan {dir} -o {out}", "is a directory"},

@@ -111,6 +111,7 @@ const char* to_string(InputFormat f) {
     case InputFormat::XmlMap: return "xml";
     case InputFormat::Csv: return "csv";
     case InputFormat::Tsplib: return "tsplib";
+    case InputFormat::Program: return "g-code program";
   }
   return "?";
 }
@@ -119,6 +120,7 @@ InputFormat detect_format(const std::string& path, std::string_view data) {
   if (dxf::looks_like_dxf(data.substr(0, 65536))) return InputFormat::Dxf;
   std::string_view head = trim(data.substr(0, 4096));
   if (!head.empty() && head.front() == '<') return InputFormat::XmlMap;
+  if (gcode::looks_like_gcode(data.substr(0, 65536))) return InputFormat::Program;
   if (looks_like_gerber(data.substr(0, 65536))) return InputFormat::Gerber;
   if (looks_like_excellon(data.substr(0, 65536))) return InputFormat::Excellon;
   // TSPLIB: a "NAME" / "TYPE" / "DIMENSION" keyword header.
@@ -172,6 +174,10 @@ LoadedHoles parse_holes(const std::string& path, std::string_view data, const In
     case InputFormat::Csv:
       check_text(shown, data);
       out = parse_csv(shown, data, options);
+      break;
+    case InputFormat::Program:
+      check_text(shown, data);
+      out = parse_program(shown, data);
       break;
   }
   apply_slot_policy(out, options.slots, shown, options.dxf.max_holes);

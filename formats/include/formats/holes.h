@@ -11,6 +11,7 @@
  *   for (const aco::Hole& h : in.holes) use(h.center, h.diameter);
  */
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -18,10 +19,11 @@
 
 #include "aco/geometry.h"
 #include "dxf/reader.h"
+#include "gcode/drilling.h"
 
 namespace formats {
 
-enum class InputFormat { Dxf, Excellon, Gerber, XmlMap, Csv, Tsplib };
+enum class InputFormat { Dxf, Excellon, Gerber, XmlMap, Csv, Tsplib, Program };
 const char* to_string(InputFormat f);
 
 // A slot: an oval hole `width_mm` wide whose centre runs from `from` to `to`
@@ -73,6 +75,10 @@ struct LoadedHoles {
   std::vector<Note> skipped;
   // Gerber X2: the file's %TF.FileFunction ("Plated,1,4,PTH,Drill"): plating and layer span.
   std::string drill_function;
+  // A drilling program (another CAM's G-code): its tool runs and how each hole
+  // is made, which `plan` reorders; `holes` holds the same holes (layer "T<n>",
+  // the diameter where the program's comments give it).
+  std::shared_ptr<const gcode::DrillingProgram> program;
 };
 
 // The holes that drill a slot: a row of the slot's width at `pitch_mm` (0: a

@@ -17,6 +17,9 @@ bool looks_like_excellon(std::string_view head);
 LoadedHoles parse_excellon(const std::string& path, std::string_view data, const InputOptions& options);
 
 bool looks_like_gerber(std::string_view head);
+// A drilling program: its holes, and the program itself in LoadedHoles::program.
+LoadedHoles parse_program(const std::string& path, std::string_view data);
+
 LoadedHoles parse_gerber(const std::string& path, std::string_view data, const InputOptions& options);
 
 }  // namespace formats

@@ -1,0 +1,32 @@
+// Another CAM's drilling program as a hole source: the reader is gcode's
+// (the one verify uses); here its holes become a hole set, one layer a tool.
+#include <memory>
+
+#include "formats/error.h"
+#include "formats/readers.h"
+
+namespace formats {
+
+LoadedHoles parse_program(const std::string& path, std::string_view data) {
+  LoadedHoles out;
+  out.format = InputFormat::Program;
+  try {
+    out.program = std::make_shared<const gcode::DrillingProgram>(gcode::read_drilling(data));
+  } catch (const gcode::ProgramError& e) {
+    throw InputError(path, e.line(), e.what());
+  }
+  out.metric = !out.program->inch;
+  for (const gcode::ToolRun& run : out.program->runs) {
+    for (const gcode::ProgramHole& h : run.holes) {
+      aco::Hole hole;
+      hole.center = h.at;
+      hole.diameter = run.diameter_mm.value_or(0.0);
+      hole.layer = "T" + std::to_string(run.tool);
+      hole.source_line = h.line;
+      out.holes.push_back(std::move(hole));
+    }
+  }
+  return out;
+}
+
+}  // namespace formats

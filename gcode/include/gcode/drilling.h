@@ -1,0 +1,104 @@
+#pragma once
+/**
+ * Another CAM's drilling program, read as a control would run it: tool runs
+ * (one tool, spindle and the holes it makes, between two tool changes), and
+ * for every hole how it is made — a canned cycle with its words (G81/G82/G83/
+ * G73, tapping G84/G74, boring G85-G89; R, Z, Q, P, F, G98/G99) or the Z moves
+ * of expanded drilling (a rapid to X Y, feed down, back up). Everything a
+ * reordered program needs to drill the same holes the same way; `verify` reads
+ * programs with it too.
+ *
+ * **Example**:
+ *   gcode::DrillingProgram p = gcode::read_drilling(text, {});
+ *   for (const gcode::ToolRun& run : p.runs) use(run.tool, run.holes.size());
+ */
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "aco/geometry.h"
+#include "gcode/interpreter.h"
+
+namespace gcode {
+
+// One Z move made over a hole (expanded drilling), or a dwell there.
+struct ZMove {
+  enum Kind { Rapid, Feed, Dwell } kind = Rapid;
+  double z_mm = 0.0;           // Rapid, Feed: absolute work Z
+  double feed_mm_min = 0.0;    // Feed: the feed rate in force
+  std::string dwell;           // Dwell: P as written ("1.0", "500")
+};
+
+// How one hole is made. Positions and lengths in mm, work coordinates.
+struct HoleCycle {
+  int code = 0;                // the canned cycle's G number (81, 82, 83, 73, 84, 74, 85..89); 0: expanded
+  // Canned cycles: the words as in force at the hole.
+  double z_mm = 0.0, r_mm = 0.0;
+  std::optional<double> q_mm;  // peck
+  std::string p;               // dwell as written ("" = none): its unit is the control's
+  double feed_mm_min = 0.0;
+  std::string extra;           // other cycle words as written, e.g. "I0.1 J0.05 K0.2" (HAAS pecks)
+  bool retract_initial = false;  // G98 (else G99)
+  bool rigid = false;          // M29 before the cycle (rigid tapping)
+  // Expanded drilling: the Z moves made over the hole, from arriving there to leaving.
+  std::vector<ZMove> moves;
+
+  double bottom_mm() const;    // the deepest Z the tool reaches
+  bool same_words(const HoleCycle& other) const;  // canned: the same cycle and words
+};
+
+struct ProgramHole {
+  aco::Point2 at;
+  HoleCycle cycle;
+  // Z of the spindle when it moved over the hole (the plane it travelled at);
+  // nullopt when it came from machine Z home (G53/G28).
+  std::optional<double> arrive_z_mm;
+  std::uint32_t line = 0;      // the line that drills it (the cycle line, or the first feed down)
+  std::uint32_t first_line = 0, last_line = 0;  // the lines that make it, XY approach to last Z move
+};
+
+// One tool's holes between two tool changes (or spindle changes), in program order.
+struct ToolRun {
+  int tool = 0;                          // the T word in force (0: none)
+  std::optional<double> diameter_mm;     // from the program's comments, where it says
+  double spindle_rpm = 0.0;              // S in force (0: never given)
+  int spindle = 0;                       // 3 (M3), 4 (M4) or 0 (not on)
+  bool tool_change = false;              // an M6 came before the holes
+  bool pause = false;                    // an M0/M1 came before the holes (manual tool change)
+  std::string message;                   // the last comment before the holes (what the operator was told)
+  int work_offset = 54;                  // G54..G59 in force
+  std::vector<ProgramHole> holes;
+};
+
+struct DrillingProgram {
+  bool inch = false;                     // the units in force at the first hole
+  int decimals = 3;                      // the most decimals of any X, Y or Z word
+  std::vector<ToolRun> runs;
+  std::map<int, double> tool_diameter_mm;  // from comments
+  // Where the spindle went in XY after the last hole, when it moved on (a park position).
+  std::optional<aco::Point2> end;
+  bool uses_line_numbers = false;
+  double rapid_xy_mm = 0.0;              // XY length of rapid moves, from X0 Y0
+  double feed_xy_mm = 0.0;               // XY length of feed moves (lenient reading only)
+  std::size_t tool_changes = 0;
+  std::size_t hole_count() const;
+};
+
+struct ReadOptions {
+  // Refuse what is not drilling — G1 moves in XY, arcs, probing, subprogram
+  // calls, other axes, another plane — naming the line (ProgramError). Off,
+  // they are read past and their XY length counted (verify).
+  bool drilling_only = true;
+};
+
+// Reads the whole program. Throws ProgramError with the line for what it cannot read.
+DrillingProgram read_drilling(std::string_view text, const ReadOptions& options = {});
+
+// True when the text reads as a G-code program rather than another hole file:
+// blocks of G/M words with Z moves, no Excellon header, no Gerber '*' blocks.
+bool looks_like_gcode(std::string_view head);
+
+}  // namespace gcode

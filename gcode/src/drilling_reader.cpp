@@ -1,0 +1,612 @@
+// Reads a drilling program the way a control runs it (RS274NGC's order of
+// execution within a block), keeping the modal state that decides where and
+// how a hole is made — units, distance mode, the cycle and its words, G98/G99,
+// feed, spindle, tool — and nothing else. Words it does not need are accepted
+// and ignored, so programs from any post read; what would make a hole list
+// wrong (cutting moves, arcs, offsets changed in the program, other axes) is
+// refused naming its line.
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <limits>
+
+#include "gcode/drilling.h"
+
+namespace gcode {
+
+namespace {
+
+constexpr double kTiny = 1e-9;
+
+struct Word {
+  char letter;
+  double value;
+  std::string text;  // the number as written
+};
+
+bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
+
+std::string_view trim(std::string_view s) {
+  while (!s.empty() && is_blank(s.front())) s.remove_prefix(1);
+  while (!s.empty() && is_blank(s.back())) s.remove_suffix(1);
+  return s;
+}
+
+// Removes "(...)" comments (nested ones too, as several controls accept) and
+// everything after ';'; returns the code and appends the comments' text.
+std::string strip_comments(std::string_view line, std::string& comment, std::uint32_t lineno) {
+  std::string code;
+  int depth = 0;
+  for (char ch : line) {
+    if (depth > 0) {
+      if (ch == '(') ++depth;
+      if (ch == ')') --depth;
+      if (depth > 0) comment += ch;
+      continue;
+    }
+    if (ch == '(') {
+      depth = 1;
+      if (!comment.empty()) comment += ' ';
+      continue;
+    }
+    if (ch == ';') break;
+    code += ch;
+  }
+  if (depth > 0) throw ProgramError(lineno, "unclosed comment");
+  return code;
+}
+
+std::string upper(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return s;
+}
+
+// Tool diameters the program's comments state: "(T1 D=6.350 MM ...)" (Fusion,
+// acodrill) or "(MSG, Change tool bit to drill size 0.8mm)" (pcb2gcode).
+void parse_tool_comment(const std::string& raw, int selected_tool, bool inch, std::map<int, double>& diameters) {
+  const std::string comment = upper(raw);
+  std::size_t i = comment.find_first_not_of(' ');
+  if (i != std::string::npos && comment[i] == 'T') {
+    int tool = 0;
+    auto r = std::from_chars(comment.data() + i + 1, comment.data() + comment.size(), tool);
+    if (r.ec != std::errc()) return;
+    std::size_t d = comment.find("D=", static_cast<std::size_t>(r.ptr - comment.data()));
+    if (d == std::string::npos) return;
+    double value = 0.0;
+    auto r2 = std::from_chars(comment.data() + d + 2, comment.data() + comment.size(), value);
+    if (r2.ec != std::errc() || !(value > 0)) return;
+    std::string rest(r2.ptr, comment.data() + comment.size());
+    const bool mm = rest.rfind(" MM", 0) == 0, in = rest.rfind(" IN", 0) == 0;
+    diameters[tool] = (mm || (!in && !inch)) ? value : value * 25.4;
+    return;
+  }
+  const std::size_t size = comment.find("DRILL SIZE ");
+  if (size != std::string::npos && selected_tool > 0) {
+    double value = 0.0;
+    const char* begin = comment.data() + size + 11;
+    auto r = std::from_chars(begin, comment.data() + comment.size(), value);
+    if (r.ec != std::errc() || !(value > 0)) return;
+    std::string unit(r.ptr, comment.data() + comment.size());
+    if (unit.rfind("MM", 0) == 0) diameters[selected_tool] = value;
+    else if (unit.rfind("INCH", 0) == 0 || unit.rfind("IN", 0) == 0) diameters[selected_tool] = value * 25.4;
+  }
+}
+
+std::vector<Word> parse_words(std::string_view code, std::uint32_t lineno) {
+  std::vector<Word> words;
+  std::size_t i = 0;
+  while (i < code.size()) {
+    const char ch = code[i];
+    if (is_blank(ch)) {
+      ++i;
+      continue;
+    }
+    if (ch == '#' || ch == '[') throw ProgramError(lineno, "parameters and expressions (# and [...]) are not read; post the program without them");
+    if (!std::isalpha(static_cast<unsigned char>(ch))) {
+      throw ProgramError(lineno, std::string("unexpected character '") + ch + "'");
+    }
+    const char letter = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
+    ++i;
+    while (i < code.size() && is_blank(code[i])) ++i;
+    const std::size_t start = i;
+    if (i < code.size() && (code[i] == '+' || code[i] == '-')) ++i;
+    while (i < code.size() && (std::isdigit(static_cast<unsigned char>(code[i])) || code[i] == '.')) ++i;
+    std::string num(code.substr(start, i - start));
+    if (!num.empty() && num[0] == '+') num.erase(0, 1);
+    if (num.empty() || num == "-" || num == "." || num == "-.") {
+      throw ProgramError(lineno, std::string("word ") + letter + " has no number");
+    }
+    double v = 0.0;
+    auto r = std::from_chars(num.data(), num.data() + num.size(), v);
+    if (r.ec != std::errc() || r.ptr != num.data() + num.size() || !std::isfinite(v)) {
+      throw ProgramError(lineno, std::string("word ") + letter + " has a bad number \"" + num + "\"");
+    }
+    words.push_back({letter, v, num});
+  }
+  return words;
+}
+
+int decimals_of(const std::string& number) {
+  const std::size_t dot = number.find('.');
+  return dot == std::string::npos ? 0 : static_cast<int>(number.size() - dot - 1);
+}
+
+enum class Motion { Rapid, Feed, Cycle };
+
+// The hole being made by expanded drilling: open from the first feed down at
+// an XY until the spindle leaves that XY.
+struct OpenHole {
+  bool open = false;
+  std::size_t run = 0, index = 0;  // where it was stored
+  double feed_start_z = 0.0;
+  bool out = false;                // back at or above the feed start: later Z moves are travel
+  std::vector<ZMove> trailing;     // moves after it came out, kept if it goes down again here
+};
+
+class Reader {
+ public:
+  explicit Reader(const ReadOptions& options) : options_(options) {}
+
+  DrillingProgram run(std::string_view text) {
+    if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);  // byte-order mark
+    std::size_t pos = 0;
+    int percents = 0;
+    while (pos <= text.size() && !ended_) {
+      std::size_t nl = text.find('\n', pos);
+      if (nl == std::string_view::npos) nl = text.size();
+      std::string_view raw = text.substr(pos, nl - pos);
+      pos = nl + 1;
+      ++lineno_;
+      std::string comment;
+      std::string code = strip_comments(raw, comment, lineno_);
+      if (!comment.empty()) {
+        parse_tool_comment(comment, selected_tool_, inch_, out_.tool_diameter_mm);
+        last_comment_ = std::string(trim(comment));
+      }
+      std::string_view line = trim(code);
+      if (!line.empty() && line.front() == '/') line = trim(line.substr(1));  // block delete off: run it
+      if (line.empty()) continue;
+      if (line.front() == '%') {
+        // A lone % opens and closes the program; text after the closing one is
+        // not part of it. "%..." with text is a comment line (some posts).
+        if (trim(line.substr(1)).empty() && ++percents == 2) break;
+        continue;
+      }
+      if (line.front() == 'O' || line.front() == 'o') {
+        // "O1001": the program's number. "o100 sub", "o100 call", "O10 if ...": subroutines and flow control.
+        const std::string rest = upper(std::string(line.substr(1)));
+        if (options_.drilling_only && rest.find_first_not_of("0123456789 \t") != std::string::npos) {
+          refuse("a subroutine or flow control (O-word)");
+        }
+        continue;
+      }
+      block(parse_words(line, lineno_));
+    }
+    close_hole();
+    // Where the program leaves the spindle, when it moved on from the last hole.
+    if (holes_seen_) {
+      const ProgramHole& last = out_.runs.back().holes.back();
+      if (aco::euclidean(last.at, xy_) > kTiny) out_.end = xy_;
+    }
+    out_.inch = holes_seen_ ? first_hole_inch_ : inch_;
+    out_.decimals = std::clamp(decimals_, out_.inch ? 4 : 3, 6);
+    return std::move(out_);
+  }
+
+ private:
+  [[noreturn]] void refuse(const std::string& what) {
+    throw ProgramError(lineno_, what + ": not a drilling program acodrill can reorder");
+  }
+
+  double scale() const { return inch_ ? 25.4 : 1.0; }
+
+  void block(const std::vector<Word>& words) {
+    std::optional<double> wx, wy, wz, wr, wq;
+    std::optional<std::string> wp;
+    std::string extra;
+    std::optional<Motion> motion;
+    int cycle_code = 0;
+    bool g80 = false, dwell = false, home = false, machine = false, change = false, stop = false;
+    std::optional<int> spindle_dir;
+    for (const Word& w : words) {
+      const int code = static_cast<int>(std::lround(w.value * 10));  // G91.1 -> 911
+      switch (w.letter) {
+        case 'N': out_.uses_line_numbers = true; break;
+        case 'G':
+          switch (code) {
+            case 0: motion = Motion::Rapid; break;
+            case 10: motion = Motion::Feed; break;
+            case 20: case 30: if (options_.drilling_only) refuse("an arc (G" + w.text + ")"); motion = Motion::Feed; break;
+            case 40: dwell = true; break;
+            case 730: case 740: case 810: case 820: case 830: case 840: case 850: case 860: case 870: case 880: case 890:
+              motion = Motion::Cycle;
+              cycle_code = code / 10;
+              break;
+            case 800: g80 = true; break;
+            case 170: break;
+            case 180: case 190: if (options_.drilling_only) refuse("another plane (G" + w.text + ")"); break;
+            case 200: inch_ = true; break;
+            case 210: inch_ = false; break;
+            case 900: absolute_ = true; break;
+            case 910: absolute_ = false; break;
+            case 940: break;
+            case 950: if (options_.drilling_only) refuse("feed per revolution (G95); post it with G94"); break;
+            case 980: retract_initial_ = true; break;
+            case 990: retract_initial_ = false; break;
+            case 530: machine = true; break;
+            case 280: case 300: home = true; break;
+            case 540: case 550: case 560: case 570: case 580: case 590: work_offset_ = code / 10; break;
+            case 100: case 520: case 920: case 510: case 680:
+              if (options_.drilling_only) refuse("G" + w.text + " changes the coordinate system");
+              break;
+            case 410: case 420: if (options_.drilling_only) refuse("cutter compensation (G" + w.text + ")"); break;
+            case 650: if (options_.drilling_only) refuse("a macro call (G65)"); break;
+            case 760: if (options_.drilling_only) refuse("G76 (threading or fine boring)"); break;
+            default:
+              if (code >= 382 && code <= 385 && options_.drilling_only) refuse("probing (G" + w.text + ")");
+              break;  // G17, G40, G43, G49, G61, G64, G91.1 ...: no effect on where holes land
+          }
+          break;
+        case 'M':
+          switch (code) {
+            case 0: case 10: stop = true; break;
+            case 20: case 300: ended_ = true; break;
+            case 30: spindle_dir = 3; break;
+            case 40: spindle_dir = 4; break;
+            case 50: spindle_dir = 0; break;
+            case 60: change = true; break;
+            case 290: rigid_ = true; break;
+            case 970: case 980: case 990: if (options_.drilling_only) refuse("a subprogram call (M" + w.text + ")"); break;
+            default: break;
+          }
+          break;
+        case 'X': wx = w.value * scale(); track(w.text); break;
+        case 'Y': wy = w.value * scale(); track(w.text); break;
+        case 'Z': wz = w.value * scale(); track(w.text); break;
+        case 'R': wr = w.value * scale(); break;
+        case 'Q': wq = w.value * scale(); break;
+        case 'P': wp = w.text; break;
+        case 'F': feed_ = w.value * scale(); break;
+        case 'S':
+          if (w.value != rpm_) boundary_ = true;
+          rpm_ = w.value;
+          break;
+        case 'T': {
+          const int t = static_cast<int>(w.value);
+          if (t != selected_tool_) boundary_ = true;
+          selected_tool_ = t;
+          break;
+        }
+        case 'I': case 'J': case 'K': case 'E': extra += (extra.empty() ? "" : " ") + std::string(1, w.letter) + w.text; break;
+        case 'L':
+          if (options_.drilling_only && std::lround(w.value) != 1) refuse("L repeats a cycle; write each hole");
+          break;
+        case 'A': case 'B': case 'C': case 'U': case 'V': case 'W':
+          if (options_.drilling_only) refuse(std::string("the ") + w.letter + " axis");
+          break;
+        default: break;  // H, D: offsets registers
+      }
+    }
+    // Order of execution: tool change, spindle, dwell, then the motion, then stops.
+    if (change) {
+      boundary_ = true;
+      pending_change_ = true;
+      ++out_.tool_changes;
+    }
+    if (spindle_dir && *spindle_dir != spindle_) {
+      boundary_ = true;
+      spindle_ = *spindle_dir;
+    }
+    if (dwell) {
+      if (hole_.open && !hole_.out) hole_move({ZMove::Dwell, 0.0, 0.0, wp.value_or("0")});
+      wp.reset();
+    }
+    if (g80) {
+      motion_ = Motion::Rapid;  // what a control does with axis words after G80
+      rigid_ = false;
+    }
+    if (motion) {
+      if (*motion == Motion::Cycle && (motion_ != Motion::Cycle || cycle_code != cycle_.code)) {
+        cycle_started_ = true;
+      }
+      if (*motion == Motion::Cycle && cycle_code != cycle_.code) cycle_.code = cycle_code;
+      motion_ = *motion;
+    }
+    if (home) {
+      // G28/G30: to home through an intermediate point; drilling programs use
+      // them for Z. The spindle is then at machine Z home.
+      leave_xy_if(wx || wy);
+      if (wz) z_.reset();
+      stopped(stop);
+      return;
+    }
+    if (machine) {
+      if (wx || wy) {
+        const aco::Point2 to{wx.value_or(xy_.x), wy.value_or(xy_.y)};
+        rapid_to(to);
+      }
+      if (wz) z_.reset();  // machine Z, usually home
+      stopped(stop);
+      return;
+    }
+    const aco::Point2 to{wx ? (absolute_ ? *wx : xy_.x + *wx) : xy_.x, wy ? (absolute_ ? *wy : xy_.y + *wy) : xy_.y};
+    if (motion_ == Motion::Cycle) {
+      cycle_block(wx || wy || wz || motion.has_value(), to, wz, wr, wq, wp, extra);
+    } else {
+      wx_given_ = wx.has_value();
+      wy_given_ = wy.has_value();
+      move(to, wz);
+    }
+    stopped(stop);
+  }
+
+  void stopped(bool stop) {
+    if (!stop) return;
+    boundary_ = true;
+    pending_pause_ = true;
+  }
+
+  void track(const std::string& number) { decimals_ = std::max(decimals_, decimals_of(number)); }
+
+  ToolRun& current_run() {
+    if (boundary_ || out_.runs.empty()) {
+      close_hole();
+      ToolRun run;
+      run.tool = selected_tool_;
+      run.spindle_rpm = rpm_;
+      run.spindle = spindle_;
+      run.tool_change = pending_change_;
+      run.pause = pending_pause_;
+      run.message = last_comment_;
+      run.work_offset = work_offset_;
+      out_.runs.push_back(std::move(run));
+      boundary_ = pending_change_ = pending_pause_ = false;
+    }
+    if (!holes_seen_) {
+      holes_seen_ = true;
+      first_hole_inch_ = inch_;
+    }
+    return out_.runs.back();
+  }
+
+  void close_hole() {
+    hole_ = OpenHole{};
+  }
+
+  void leave_xy_if(bool leaving) {
+    if (leaving) close_hole();
+  }
+
+  void rapid_to(aco::Point2 to) {
+    const double d = aco::euclidean(xy_, to);
+    if (d <= kTiny) return;
+    out_.rapid_xy_mm += d;
+    close_hole();
+    xy_ = to;
+    arrive_z_ = z_;
+    arrive_line_ = lineno_;
+    approach_.clear();
+  }
+
+  void hole_move(const ZMove& m) {
+    ProgramHole& h = out_.runs[hole_.run].holes[hole_.index];
+    h.cycle.moves.push_back(m);
+    h.last_line = lineno_;
+  }
+
+  void move(aco::Point2 to, std::optional<double> wz) {
+    const double d = aco::euclidean(xy_, to);
+    std::optional<double> nz;
+    if (wz) nz = absolute_ ? *wz : z_.value_or(0.0) + *wz;
+    if (motion_ == Motion::Feed && d > kTiny) {
+      if (options_.drilling_only) refuse("G1 moves in X/Y: a cutting move");
+      out_.feed_xy_mm += d;
+      close_hole();
+      xy_ = to;
+      arrive_z_ = z_;
+      approach_.clear();
+      if (nz) z_ = nz;
+      return;
+    }
+    if (d <= kTiny && (wx_given_ || wy_given_)) {
+      // A rapid to where the spindle is ends the hole here: the next feed down
+      // is another hole at the same place (drilled twice), not a deeper peck.
+      close_hole();
+      arrive_z_ = z_;
+      arrive_line_ = lineno_;
+      approach_.clear();
+    }
+    if (d > kTiny) {
+      // A rapid in XY (with Z, moving both: the higher of the two is the plane it travelled at).
+      if (nz && (!z_ || *nz > *z_)) z_ = nz;
+      rapid_to(to);
+      if (nz && *nz < z_.value_or(std::numeric_limits<double>::infinity())) {
+        approach_.push_back({ZMove::Rapid, *nz, 0.0, ""});
+        z_ = nz;
+      }
+      return;
+    }
+    if (!nz) return;
+    const bool down = z_ ? *nz < *z_ - kTiny : true;
+    if (motion_ == Motion::Feed && down && z_) {
+      // Feeding down at an XY: a hole, or the next plunge of the one here.
+      if (hole_.open) {
+        for (const ZMove& m : hole_.trailing) hole_move(m);
+        hole_.trailing.clear();
+        hole_.out = false;
+      } else {
+        ToolRun& run = current_run();
+        ProgramHole h;
+        h.at = xy_;
+        h.arrive_z_mm = arrive_z_;
+        h.line = lineno_;
+        h.first_line = arrive_line_ ? arrive_line_ : lineno_;
+        h.last_line = lineno_;
+        h.cycle.moves = approach_;
+        run.holes.push_back(std::move(h));
+        hole_ = OpenHole{true, out_.runs.size() - 1, run.holes.size() - 1, *z_, false, {}};
+        approach_.clear();
+      }
+      hole_move({ZMove::Feed, *nz, feed_, ""});
+      z_ = nz;
+      return;
+    }
+    const ZMove m{motion_ == Motion::Feed ? ZMove::Feed : ZMove::Rapid, *nz, feed_, ""};
+    z_ = nz;
+    if (!hole_.open) {
+      approach_.push_back(m);
+      return;
+    }
+    if (hole_.out) {
+      hole_.trailing.push_back(m);
+      return;
+    }
+    hole_move(m);
+    if (*nz >= hole_.feed_start_z - kTiny) hole_.out = true;  // out of the hole: the rest is travel
+  }
+
+  void cycle_block(bool drills, aco::Point2 to, std::optional<double> wz, std::optional<double> wr,
+                   std::optional<double> wq, const std::optional<std::string>& wp, const std::string& extra) {
+    close_hole();
+    if (cycle_started_) {
+      initial_z_ = z_;
+      cycle_started_ = false;
+      cycle_.q_mm.reset();
+      cycle_.p.clear();
+      cycle_.extra.clear();
+    }
+    // G91: R is measured from the initial plane, Z from R.
+    if (wr) cycle_.r_mm = absolute_ ? *wr : initial_z_.value_or(0.0) + *wr;
+    if (wr) have_r_ = true;
+    if (wz) {
+      cycle_.z_mm = absolute_ ? *wz : cycle_.r_mm + *wz;
+      have_z_ = true;
+    }
+    if (wq) cycle_.q_mm = std::fabs(*wq);
+    if (wp) cycle_.p = *wp;
+    if (!extra.empty()) cycle_.extra = extra;
+    if (!drills) return;
+    if (!have_r_) throw ProgramError(lineno_, "canned cycle without an R plane");
+    if (!have_z_) throw ProgramError(lineno_, "canned cycle without a depth (Z)");
+    if (cycle_.z_mm >= cycle_.r_mm) throw ProgramError(lineno_, "canned cycle depth Z is not below R");
+    cycle_.feed_mm_min = feed_;
+    cycle_.retract_initial = retract_initial_;
+    cycle_.rigid = rigid_ && (cycle_.code == 84 || cycle_.code == 74);
+    // The control first rises to R if below it, then moves in XY.
+    std::optional<double> arrive = z_;
+    if (arrive && *arrive < cycle_.r_mm) arrive = cycle_.r_mm;
+    const bool moved = aco::euclidean(xy_, to) > kTiny;
+    const std::uint32_t arrived_on = arrive_line_;
+    z_ = arrive;
+    if (moved) rapid_to(to);
+    ToolRun& run = current_run();
+    ProgramHole h;
+    h.at = xy_;
+    h.cycle = cycle_;
+    h.cycle.moves.clear();
+    h.arrive_z_mm = moved ? arrive : arrive_z_;
+    h.line = lineno_;
+    // A rapid to this very XY just before the cycle (FreeCAD: "G0 X Y" then "G83 X Y ...") belongs to the hole.
+    h.first_line = !moved && arrived_on && arrived_on >= last_hole_line_ ? arrived_on : lineno_;
+    h.last_line = lineno_;
+    run.holes.push_back(std::move(h));
+    last_hole_line_ = lineno_;
+    const double clear = retract_initial_ ? std::max(initial_z_.value_or(cycle_.r_mm), cycle_.r_mm) : cycle_.r_mm;
+    z_ = clear;
+    arrive_z_ = clear;
+    arrive_line_ = 0;
+  }
+
+  const ReadOptions& options_;
+  DrillingProgram out_;
+  std::uint32_t lineno_ = 0;
+  bool ended_ = false;
+  bool inch_ = false, absolute_ = true, retract_initial_ = true, rigid_ = false;
+  bool holes_seen_ = false, first_hole_inch_ = false;
+  int decimals_ = 0;
+  Motion motion_ = Motion::Rapid;
+  aco::Point2 xy_{0.0, 0.0};
+  std::optional<double> z_;             // nullopt: at machine Z home (or not yet known)
+  std::optional<double> arrive_z_;      // Z when the spindle arrived at this XY
+  std::uint32_t arrive_line_ = 0, last_hole_line_ = 0;
+  std::vector<ZMove> approach_;         // Z moves at this XY before any feed down
+  OpenHole hole_;
+  HoleCycle cycle_;
+  bool cycle_started_ = false, have_r_ = false, have_z_ = false;
+  std::optional<double> initial_z_;
+  double feed_ = 0.0, rpm_ = 0.0;
+  int spindle_ = 0, selected_tool_ = 0, work_offset_ = 54;
+  bool wx_given_ = false, wy_given_ = false;  // the block being run has X / Y words
+  bool boundary_ = false, pending_change_ = false, pending_pause_ = false;
+  std::string last_comment_;
+};
+
+}  // namespace
+
+double HoleCycle::bottom_mm() const {
+  if (code != 0) return z_mm;
+  double bottom = std::numeric_limits<double>::infinity();
+  for (const ZMove& m : moves) {
+    if (m.kind == ZMove::Feed) bottom = std::min(bottom, m.z_mm);
+  }
+  return bottom;
+}
+
+bool HoleCycle::same_words(const HoleCycle& o) const {
+  return code == o.code && z_mm == o.z_mm && r_mm == o.r_mm && q_mm == o.q_mm && p == o.p && feed_mm_min == o.feed_mm_min &&
+         extra == o.extra && rigid == o.rigid;
+}
+
+std::size_t DrillingProgram::hole_count() const {
+  std::size_t n = 0;
+  for (const ToolRun& r : runs) n += r.holes.size();
+  return n;
+}
+
+DrillingProgram read_drilling(std::string_view text, const ReadOptions& options) {
+  Reader reader(options);
+  DrillingProgram p = reader.run(text);
+  for (ToolRun& run : p.runs) {
+    auto d = p.tool_diameter_mm.find(run.tool);
+    if (d != p.tool_diameter_mm.end()) run.diameter_mm = d->second;
+  }
+  return p;
+}
+
+bool looks_like_gcode(std::string_view head) {
+  // Excellon has M48 and no Z words; Gerber ends its blocks with '*'. A
+  // drilling program moves Z: a Z word with a number, beside G or M words.
+  std::size_t pos = 0, z_blocks = 0, g_blocks = 0;
+  if (head.substr(0, 3) == "\xEF\xBB\xBF") head.remove_prefix(3);
+  while (pos < head.size()) {
+    std::size_t nl = head.find('\n', pos);
+    if (nl == std::string_view::npos) nl = head.size();
+    std::string_view raw = head.substr(pos, nl - pos);
+    pos = nl + 1;
+    std::string code;
+    int depth = 0;
+    for (char ch : raw) {
+      if (ch == '(') ++depth;
+      else if (ch == ')') depth = std::max(0, depth - 1);
+      else if (ch == ';' && depth == 0) break;
+      else if (depth == 0) code += static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
+    }
+    std::string_view line = trim(code);
+    if (line.empty() || line.front() == '%') continue;
+    if (line.back() == '*') return false;
+    if (line.rfind("M48", 0) == 0) return false;
+    bool g = false, z = false;
+    for (std::size_t i = 0; i + 1 < line.size(); ++i) {
+      const char c = line[i], next = line[i + 1];
+      const bool number = std::isdigit(static_cast<unsigned char>(next)) || next == '-' || next == '.' || next == '+' || next == ' ';
+      if ((c == 'G' || c == 'M') && number) g = true;
+      if (c == 'Z' && number && (i == 0 || !std::isalpha(static_cast<unsigned char>(line[i - 1])))) z = true;
+    }
+    if (g) ++g_blocks;
+    if (z) ++z_blocks;
+  }
+  return z_blocks > 0 && g_blocks > 0;
+}
+
+}  // namespace gcode
