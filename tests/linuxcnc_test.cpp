@@ -9,6 +9,8 @@
 #include <filesystem>
 #include <map>
 #include <regex>
+#include <set>
+#include <sstream>
 
 #include "gcode/interpreter.h"
 #include "test_util.h"
@@ -290,3 +292,161 @@ TEST(linuxcnc_test, gerber_drill_files_plan_to_programs_rs274_reads_back) {
     check_program(t / "p.nc", in, false, input, in + ".holes.csv");
   }
 }
+
+// Issue 14: other CAMs' drilling programs, reordered. rs274 reads each output
+// to exactly the holes it reads from the input (tests/data/real-gcode/
+// NAME.holes.csv: position, deepest Z, tool), and its XY rapid travel is no
+// longer than the input's as rs274 runs that.
+namespace {
+
+struct CanonRun {
+  struct Hole {
+    int tool;
+    double x, y, z;  // mm
+  };
+  std::vector<Hole> holes;
+  double rapid_xy_mm = 0.0;
+};
+
+// A hole: downward STRAIGHT_FEEDs at one XY, begun after the XY or the tool
+// changed or after a rapid that went nowhere (a "G0 X Y" to the same place:
+// the same position drilled again).
+CanonRun read_canon(const std::string& canon, double scale) {
+  CanonRun out;
+  static const std::regex call(R"((STRAIGHT_TRAVERSE|STRAIGHT_FEED|SELECT_TOOL)\(([^)]*)\))");
+  int tool = 0;
+  double x = 0, y = 0, z = 0;
+  bool fresh = true;
+  std::istringstream in(canon);
+  for (std::string line; std::getline(in, line);) {
+    std::smatch m;
+    if (!std::regex_search(line, m, call)) continue;
+    if (m[1] == "SELECT_TOOL") {
+      tool = std::stoi(m[2]);
+      fresh = true;
+      continue;
+    }
+    std::vector<double> v;
+    std::istringstream args(m[2]);
+    for (std::string a; std::getline(args, a, ',');) v.push_back(std::stod(a) * scale);
+    const bool xy_moved = std::fabs(v[0] - x) > 1e-9 || std::fabs(v[1] - y) > 1e-9;
+    if (m[1] == "STRAIGHT_TRAVERSE") {
+      out.rapid_xy_mm += std::hypot(v[0] - x, v[1] - y);
+      if (xy_moved || std::fabs(v[2] - z) <= 1e-9) fresh = true;
+    } else if (xy_moved) {
+      fresh = true;
+    } else if (v[2] < z - 1e-9) {
+      if (fresh) out.holes.push_back({tool, v[0], v[1], v[2]});
+      fresh = false;
+      out.holes.back().z = std::min(out.holes.back().z, v[2]);
+    }
+    x = v[0];
+    y = v[1];
+    z = v[2];
+  }
+  return out;
+}
+
+// What makes a real program readable by rs274, as for the fixtures' own hole
+// lists (../shared/fixtures/real-gcode/README.md): no byte-order mark, no "%"
+// comment lines, a G0 before bare axis words after G80, a program end.
+std::string for_rs274(std::string text) {
+  if (text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);
+  std::istringstream in(text);
+  std::string out;
+  bool after_g80 = false, ended = false;
+  static const std::regex g80(R"(G80\b)"), motion(R"(\bG0*[0-3]\b|\bG8[1-9]\b|\bG7[34]\b)"), bare_axis(R"(^\s*(N\d+\s*)?[XYZ][-+.\d])");
+  for (std::string line; std::getline(in, line);) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (!line.empty() && line[0] == '%' && line.find_first_not_of("% \t") != std::string::npos) continue;
+    if (after_g80 && std::regex_search(line, bare_axis)) line = "G0 " + line;
+    if (std::regex_search(line, g80)) after_g80 = true;
+    else if (std::regex_search(line, motion)) after_g80 = false;
+    if (std::regex_search(line, std::regex(R"(\bM0*(2|30)\b)"))) ended = true;
+    out += line + "\n";
+  }
+  if (!ended && out.find("%") == std::string::npos) out += "M2\n";
+  return out;
+}
+
+CanonRun run_rs274(const std::string& program_text, double scale, const std::string& what) {
+  testutil::TempDir t;
+  std::string table;
+  static const std::regex tool_word(R"(\bT(\d+))");
+  std::set<std::string> tools;
+  for (std::sregex_iterator it(program_text.begin(), program_text.end(), tool_word), end; it != end; ++it) {
+    tools.insert((*it)[1].str());
+  }
+  for (const std::string& n : tools) table += "T" + n + " P" + n + " Z0 D1\n";
+  testutil::spit(t / "tool.tbl", table);
+  testutil::spit(t / "p.ngc", for_rs274(program_text));
+  auto r = testutil::run("cd " + testutil::shell_quote(t.path()) + " && rs274 -t tool.tbl -g p.ngc");
+  EXPECT_EQ(r.code, 0) << what << ": rs274 rejected the program:\n" << r.err;
+  return read_canon(r.out, scale);
+}
+
+std::vector<CanonRun::Hole> sorted(std::vector<CanonRun::Hole> h) {
+  std::sort(h.begin(), h.end(), [](const CanonRun::Hole& a, const CanonRun::Hole& b) {
+    return std::tie(a.tool, a.x, a.y, a.z) < std::tie(b.tool, b.x, b.y, b.z);
+  });
+  return h;
+}
+
+class ReorderedProgram : public ::testing::TestWithParam<std::string> {};
+
+}  // namespace
+
+TEST_P(ReorderedProgram, rs274_reads_the_same_holes_tools_and_depths_and_no_longer_travel) {
+  ASSERT_TRUE(have_rs274());
+  const std::string input = GetParam();
+  const std::string input_text = testutil::slurp(input);
+  const bool inch = input_text.find("G20") != std::string::npos;
+  const double scale = inch ? 25.4 : 1.0;
+  const CanonRun before = run_rs274(input_text, scale, input);
+  // The fixture's own list of what rs274 drills: our reading of the input must match it first.
+  const aco::HoleSet listed = testutil::read_holes_csv(testutil::slurp(input.substr(0, input.find_last_of('.')) + ".holes.csv"));
+  ASSERT_EQ(before.holes.size(), listed.size()) << input;
+  testutil::TempDir t;
+  for (const char* mode : {"--dialect haas", "--dialect linuxcnc", "--keep-style", "--dialect fanuc --units inch"}) {
+    const std::string what = input + " " + mode;
+    const std::string out = t / "out.nc";
+    auto r = testutil::acodrill_run("plan " + testutil::shell_quote(input) + " -o " + out + " -q --iterations 50 " + mode);
+    ASSERT_EQ(r.code, 0) << what << "\n" << r.err;
+    const std::string text = testutil::slurp(out);
+    const double out_scale = text.find("G20") != std::string::npos ? 25.4 : 1.0;
+    const CanonRun after = run_rs274(text, out_scale, what);
+    const auto a = sorted(before.holes), b = sorted(after.holes);
+    ASSERT_EQ(a.size(), b.size()) << what;
+    const double tol = 0.00005 * 25.4 + 0.0005;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+      EXPECT_EQ(a[i].tool, b[i].tool) << what << " hole " << i;
+      EXPECT_NEAR(a[i].x, b[i].x, tol) << what << " hole " << i;
+      EXPECT_NEAR(a[i].y, b[i].y, tol) << what << " hole " << i;
+      EXPECT_NEAR(a[i].z, b[i].z, tol) << what << " hole " << i;
+    }
+    EXPECT_LE(after.rapid_xy_mm, before.rapid_xy_mm + 1e-3) << what;
+  }
+}
+
+namespace {
+std::vector<std::string> real_programs() {
+  std::vector<std::string> out;
+  for (const auto& e : std::filesystem::directory_iterator(testutil::data("real-gcode"))) {
+    const std::string name = e.path().filename().string();
+    const std::string ext = e.path().extension().string();
+    if (name.find(".holes.csv") != std::string::npos) continue;
+    if (ext == ".nc" || ext == ".ngc" || ext == ".tap" || (ext == ".txt" && name.find("drill") != std::string::npos)) {
+      out.push_back(e.path().string());
+    }
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+std::string program_name(const ::testing::TestParamInfo<std::string>& info) {
+  std::string n = std::filesystem::path(info.param).filename().string();
+  for (char& c : n) if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+  return n;
+}
+}  // namespace
+
+INSTANTIATE_TEST_SUITE_P(real_gcode, ReorderedProgram, ::testing::ValuesIn(real_programs()), program_name);

@@ -19,10 +19,12 @@
 #include "app/files.h"
 #include "app/inputs.h"
 #include "app/plan.h"
+#include "app/reorder.h"
 #include "app/report.h"
 #include "app/setup_sheet.h"
 #include "app/svg.h"
 #include "app/verify.h"
+#include "gcode/drilling.h"
 #include "gcode/interpreter.h"
 #include "gcode/program.h"
 
@@ -195,12 +197,156 @@ int cmd_holes(const std::string& input, const InputArgs& in_args, const std::str
 
 struct PlanArgs {
   std::string input, output, report, svg, svg_compare, convergence, excellon, gerber, setup_sheet;
-  std::string dialect = "haas", units, tools, machine, material, objective = "distance", origin = "lower-left";
+  std::string dialect = "haas", units, tools, machine, material, objective = "distance", origin;
+  bool keep_style = false;
+  double min_spacing = 0.0;
   std::optional<double> thickness, default_diameter;
   std::size_t resume_from = 1;
   int program_number = 1001;
   bool quiet = false;
 };
+
+// Writes the program and every asked-for output (each complete or not at
+// all), then the summary on stderr.
+int finish_plan(const PlanArgs& a, const std::string& program_text, const aco::HoleSet& holes, const app::PlanResult& plan,
+                const app::PlanOptions& o, const app::ReportContext& ctx, const std::vector<gcode::ToolPass>& passes) {
+  const app::LoadedHoles& loaded = *ctx.input;
+  const app::Placement& placement = ctx.placement;
+  const std::size_t n_tools = plan.groups.size();
+  const std::string source_name = ctx.source.substr(ctx.source.find_last_of('/') == std::string::npos ? 0 : ctx.source.find_last_of('/') + 1);
+  // Everything is computed; now write, each file complete or not at all.
+  app::write_file_atomic(a.output, program_text);
+  if (!a.report.empty()) app::write_file_atomic(a.report, app::report_json(holes, plan, ctx));
+  if (!a.convergence.empty()) app::write_file_atomic(a.convergence, app::convergence_csv(plan));
+  if (!a.svg.empty()) app::write_file_atomic(a.svg, app::route_svg(holes, plan, o, placement, ctx.name));
+  if (!a.svg_compare.empty()) {
+    app::write_file_atomic(a.svg_compare, app::compare_svg(holes, plan, o, placement, ctx.name));
+  }
+  if (!a.setup_sheet.empty()) app::write_file_atomic(a.setup_sheet, app::setup_sheet_html(holes, plan, o, ctx));
+  if (!a.excellon.empty()) {
+    // The input's own units when it is Excellon, unless --units chose others.
+    const bool metric = a.units.empty() ? loaded.metric.value_or(true) : o.program.units == gcode::Units::Mm;
+    app::write_file_atomic(a.excellon, formats::write_excellon(in_input_coordinates(passes, placement), metric, source_name));
+  }
+  if (!a.gerber.empty()) {
+    app::write_file_atomic(a.gerber, formats::write_gerber(in_input_coordinates(passes, placement), source_name,
+                                                           loaded.drill_function));
+  }
+
+  if (!a.quiet) {
+    print_warnings(loaded, a.input, a.quiet);
+    const auto& in = plan.input_order;
+    const auto& nn = plan.nearest_neighbor;
+    const auto& op = plan.optimized;
+    auto pct = [](double before, double after) {
+      return before > 0 ? gcode::format_number(100.0 * (before - after) / before, 1) + " %" : std::string("-");
+    };
+    std::fprintf(stderr, "acodrill: %zu holes, %zu tool%s, %d iterations in %.2f s on %d thread%s\n",
+                 holes.size(), n_tools, n_tools == 1 ? "" : "s", plan.iterations, plan.solver_wall_s,
+                 plan.solver.threads, plan.solver.threads == 1 ? "" : "s");
+    std::fprintf(stderr, "  %-18s %12s %12s\n", "order", "travel mm", "time min");
+    std::fprintf(stderr, "  %-18s %12.1f %12.2f\n", ctx.program_input ? "input program" : "input order", in.travel_mm,
+                 in.time_s / 60);
+    std::fprintf(stderr, "  %-18s %12.1f %12.2f\n", "nearest neighbour", nn.travel_mm, nn.time_s / 60);
+    std::fprintf(stderr, "  %-18s %12.1f %12.2f\n", "optimized", op.travel_mm, op.time_s / 60);
+    if (ctx.program_input && ctx.program_input->overlapping_holes) {
+      std::fprintf(stderr, "  %zu overlapping holes (%zu groups) drilled together in their input order\n",
+                   ctx.program_input->overlapping_holes, ctx.program_input->overlap_groups);
+    }
+    std::fprintf(stderr, "  saved vs input order: %s travel, %s time; vs nearest neighbour: %s travel\n",
+                 pct(in.travel_mm, op.travel_mm).c_str(), pct(in.time_s, op.time_s).c_str(),
+                 pct(nn.travel_mm, op.travel_mm).c_str());
+    if (a.output != "-") std::fprintf(stderr, "  program: %s\n", a.output.c_str());
+    if (!a.report.empty()) std::fprintf(stderr, "  report: %s\n", a.report.c_str());
+    if (!a.convergence.empty()) std::fprintf(stderr, "  convergence: %s\n", a.convergence.c_str());
+    if (!a.excellon.empty()) std::fprintf(stderr, "  excellon: %s\n", a.excellon.c_str());
+    if (!a.gerber.empty()) std::fprintf(stderr, "  gerber: %s\n", a.gerber.c_str());
+    if (!a.svg.empty()) std::fprintf(stderr, "  picture: %s\n", a.svg.c_str());
+    if (!a.svg_compare.empty()) std::fprintf(stderr, "  comparison: %s\n", a.svg_compare.c_str());
+    if (!a.setup_sheet.empty()) std::fprintf(stderr, "  setup sheet: %s\n", a.setup_sheet.c_str());
+    const app::Extent& e = placement.extent;
+    if (ctx.program_input) {
+      std::fprintf(stderr, "  coordinates as in the input program (its work offset); holes X%s..%s Y%s..%s mm\n",
+                   gcode::format_number(e.x_min, 3).c_str(), gcode::format_number(e.x_max, 3).c_str(),
+                   gcode::format_number(e.y_min, 3).c_str(), gcode::format_number(e.y_max, 3).c_str());
+      return 0;
+    }
+    std::fprintf(stderr, "  program zero: %s (drawing X%s Y%s mm); holes X%s..%s Y%s..%s mm\n",
+                 app::describe(placement.origin).c_str(), gcode::format_number(placement.zero.x, 3).c_str(),
+                 gcode::format_number(placement.zero.y, 3).c_str(), gcode::format_number(e.x_min, 3).c_str(),
+                 gcode::format_number(e.x_max, 3).c_str(), gcode::format_number(e.y_min, 3).c_str(),
+                 gcode::format_number(e.y_max, 3).c_str());
+  }
+  return 0;
+}
+
+// Issue 14: another CAM's drilling program, reordered within each tool run;
+// its coordinates, tools, cycles and depths stay exactly as they are.
+int plan_program(const PlanArgs& a, app::PlanOptions o, const app::LoadedHoles& loaded, const InputArgs& in_args) {
+  const std::string source = a.input == "-" ? "<stdin>" : a.input;
+  const gcode::DrillingProgram& input = *loaded.program;
+  // What only makes sense for hole files.
+  if (!in_args.layers.empty() || in_args.min_d || in_args.max_d) {
+    throw app::UserError("--layer, --min-diameter and --max-diameter select holes of hole files; a program is reordered whole");
+  }
+  if (!a.origin.empty() && a.origin != "drawing") {
+    throw app::UserError("--origin: a program's coordinates stay as they are (the machinist set the work offset for them)");
+  }
+  for (const auto& [given, name] : {std::pair{!a.tools.empty(), "--tools"}, {a.resume_from != 1, "--resume-from"},
+                                    {!a.material.empty(), "--material"}, {a.thickness.has_value(), "--thickness"},
+                                    {a.default_diameter.has_value(), "--default-diameter"}}) {
+    if (given) throw app::UserError(std::string(name) + " does not apply to a program: its tools, cycles and depths are kept");
+  }
+  if (input.hole_count() == 0) throw app::UserError(source, 0, "no holes to drill: the program drills nothing");
+  const bool inch = a.units.empty() ? input.inch : o.program.units == gcode::Units::Inch;
+  if (a.keep_style && inch != input.inch) {
+    throw app::UserError("--keep-style keeps the input's units (" + std::string(input.inch ? "inch" : "mm") + "); drop --units");
+  }
+  if (inch != input.inch) {
+    for (const gcode::ToolRun& run : input.runs) {
+      for (const gcode::ProgramHole& h : run.holes) {
+        if (!h.cycle.extra.empty()) {
+          throw app::UserError(source, h.line, "cycle words \"" + h.cycle.extra + "\" stay in the input's units; drop --units");
+        }
+      }
+    }
+  }
+  app::ReorderOptions ro;
+  ro.min_spacing_mm = a.min_spacing;
+  app::ReorderResult r = app::reorder_program(input, o, ro);
+  app::check_travel(r.holes, o.machine, source);
+
+  const std::string source_name = source.substr(source.find_last_of('/') == std::string::npos ? 0 : source.find_last_of('/') + 1);
+  gcode::DrillingWriteSettings ws;
+  ws.dialect = o.program.dialect;
+  ws.inch = inch;
+  ws.decimals = std::clamp(input.decimals + (inch == input.inch ? 0 : inch ? 1 : -1), inch ? 4 : 3, 6);
+  ws.program_number = a.program_number;
+  ws.program_name = loaded.name;
+  ws.keep_style = a.keep_style;
+  const std::string text = app::read_file(a.input);
+  ws.source = text;
+  ws.header_comments = {
+      "SOURCE: " + source_name + " (A DRILLING PROGRAM, REORDERED)",
+      std::to_string(r.holes.size()) + " HOLES IN " + std::to_string(r.plan.groups.size()) + " TOOL RUNS",
+      "TRAVEL " + gcode::format_number(r.plan.optimized.travel_mm, 1) + " MM, INPUT " +
+          gcode::format_number(r.plan.input_order.travel_mm, 1) + " MM",
+      "ORDER: ACODRILL " + std::string(aco::to_string(r.plan.solver.algorithm)) + " SEED " + std::to_string(r.plan.solver.seed),
+      "COORDINATES, TOOLS, CYCLES AND DEPTHS AS IN THE INPUT"};
+  std::ostringstream program;
+  try {
+    gcode::write_drilling(program, r.program, ws);
+  } catch (const std::invalid_argument& e) {
+    throw app::UserError(e.what());
+  }
+  app::Placement placement;
+  placement.origin = app::Origin{app::OriginKind::Drawing, {}};
+  placement.extent = app::extent_of(r.holes);
+  app::ReportContext ctx{source, a.output, placement, loaded.name, &loaded, std::nullopt};
+  ctx.program_input = app::ReportContext::ProgramInput{r.plan.groups.size(), r.overlapping_holes, r.overlap_groups,
+                                                       a.keep_style ? "keep" : "dialect"};
+  return finish_plan(a, program.str(), r.holes, r.plan, o, ctx, app::to_passes(r.holes, r.plan, o.machine));
+}
 
 int cmd_plan(const PlanArgs& a, const SolverArgs& s, const InputArgs& in_args) {
   // Refuse to overwrite the input with the program before doing any work.
@@ -211,7 +357,7 @@ int cmd_plan(const PlanArgs& a, const SolverArgs& s, const InputArgs& in_args) {
   }
   app::PlanOptions o;
   o.solver = to_params(s);
-  const app::Origin origin = parse_origin(a.origin);
+  const app::Origin origin = parse_origin(a.origin.empty() ? "lower-left" : a.origin);
   auto dialect = gcode::dialect_from_string(a.dialect);
   if (!dialect) throw app::UserError("--dialect must be haas, fanuc or linuxcnc (got \"" + a.dialect + "\")");
   o.program.dialect = *dialect;
@@ -231,6 +377,10 @@ int cmd_plan(const PlanArgs& a, const SolverArgs& s, const InputArgs& in_args) {
   if (!a.tools.empty()) o.tools = app::load_tool_table(a.tools);
 
   app::LoadedHoles loaded = app::load_holes(a.input, to_input_options(in_args));
+  if (loaded.program) return plan_program(a, o, loaded, in_args);
+  if (a.keep_style || a.min_spacing > 0) {
+    throw app::UserError("--keep-style and --min-spacing apply to a drilling program input (G-code)");
+  }
   // PCB drill data is a circuit board unless the user says otherwise: PCB
   // feeds and speeds through a 1.6 mm board, not a quarter inch of steel.
   const bool board = loaded.format == app::InputFormat::Excellon || loaded.format == app::InputFormat::Gerber;
@@ -289,60 +439,8 @@ int cmd_plan(const PlanArgs& a, const SolverArgs& s, const InputArgs& in_args) {
     throw app::UserError(e.what());
   }
 
-  // Everything is computed; now write, each file complete or not at all.
-  app::write_file_atomic(a.output, program.str());
-  app::ReportContext ctx{source, a.output, placement, loaded.name, &loaded};
-  if (!a.report.empty()) app::write_file_atomic(a.report, app::report_json(loaded.holes, plan, ctx));
-  if (!a.convergence.empty()) app::write_file_atomic(a.convergence, app::convergence_csv(plan));
-  if (!a.svg.empty()) app::write_file_atomic(a.svg, app::route_svg(loaded.holes, plan, o, placement, loaded.name));
-  if (!a.svg_compare.empty()) {
-    app::write_file_atomic(a.svg_compare, app::compare_svg(loaded.holes, plan, o, placement, loaded.name));
-  }
-  if (!a.setup_sheet.empty()) app::write_file_atomic(a.setup_sheet, app::setup_sheet_html(loaded.holes, plan, o, ctx));
-  if (!a.excellon.empty()) {
-    // The input's own units when it is Excellon, unless --units chose others.
-    const bool metric = a.units.empty() ? loaded.metric.value_or(true) : o.program.units == gcode::Units::Mm;
-    app::write_file_atomic(a.excellon, formats::write_excellon(in_input_coordinates(passes, placement), metric, source_name));
-  }
-  if (!a.gerber.empty()) {
-    app::write_file_atomic(a.gerber, formats::write_gerber(in_input_coordinates(passes, placement), source_name,
-                                                           loaded.drill_function));
-  }
-
-  if (!a.quiet) {
-    print_warnings(loaded, a.input, a.quiet);
-    const auto& in = plan.input_order;
-    const auto& nn = plan.nearest_neighbor;
-    const auto& op = plan.optimized;
-    auto pct = [](double before, double after) {
-      return before > 0 ? gcode::format_number(100.0 * (before - after) / before, 1) + " %" : std::string("-");
-    };
-    std::fprintf(stderr, "acodrill: %zu holes, %zu tool%s, %d iterations in %.2f s on %d thread%s\n",
-                 loaded.holes.size(), n_tools, n_tools == 1 ? "" : "s", plan.iterations, plan.solver_wall_s,
-                 plan.solver.threads, plan.solver.threads == 1 ? "" : "s");
-    std::fprintf(stderr, "  %-18s %12s %12s\n", "order", "travel mm", "time min");
-    std::fprintf(stderr, "  %-18s %12.1f %12.2f\n", "input order", in.travel_mm, in.time_s / 60);
-    std::fprintf(stderr, "  %-18s %12.1f %12.2f\n", "nearest neighbour", nn.travel_mm, nn.time_s / 60);
-    std::fprintf(stderr, "  %-18s %12.1f %12.2f\n", "optimized", op.travel_mm, op.time_s / 60);
-    std::fprintf(stderr, "  saved vs input order: %s travel, %s time; vs nearest neighbour: %s travel\n",
-                 pct(in.travel_mm, op.travel_mm).c_str(), pct(in.time_s, op.time_s).c_str(),
-                 pct(nn.travel_mm, op.travel_mm).c_str());
-    if (a.output != "-") std::fprintf(stderr, "  program: %s\n", a.output.c_str());
-    if (!a.report.empty()) std::fprintf(stderr, "  report: %s\n", a.report.c_str());
-    if (!a.convergence.empty()) std::fprintf(stderr, "  convergence: %s\n", a.convergence.c_str());
-    if (!a.excellon.empty()) std::fprintf(stderr, "  excellon: %s\n", a.excellon.c_str());
-    if (!a.gerber.empty()) std::fprintf(stderr, "  gerber: %s\n", a.gerber.c_str());
-    if (!a.svg.empty()) std::fprintf(stderr, "  picture: %s\n", a.svg.c_str());
-    if (!a.svg_compare.empty()) std::fprintf(stderr, "  comparison: %s\n", a.svg_compare.c_str());
-    if (!a.setup_sheet.empty()) std::fprintf(stderr, "  setup sheet: %s\n", a.setup_sheet.c_str());
-    const app::Extent& e = placement.extent;
-    std::fprintf(stderr, "  program zero: %s (drawing X%s Y%s mm); holes X%s..%s Y%s..%s mm\n",
-                 app::describe(placement.origin).c_str(), gcode::format_number(placement.zero.x, 3).c_str(),
-                 gcode::format_number(placement.zero.y, 3).c_str(), gcode::format_number(e.x_min, 3).c_str(),
-                 gcode::format_number(e.x_max, 3).c_str(), gcode::format_number(e.y_min, 3).c_str(),
-                 gcode::format_number(e.y_max, 3).c_str());
-  }
-  return 0;
+  app::ReportContext ctx{source, a.output, placement, loaded.name, &loaded, std::nullopt};
+  return finish_plan(a, program.str(), loaded.holes, plan, o, ctx, passes);
 }
 
 int cmd_tsp(const std::string& input, const std::string& tour, const SolverArgs& s, bool quiet) {
@@ -450,9 +548,11 @@ int main(int argc, char** argv) {
       "                                                            zero at the holes' centre; a sheet for the operator\n"
       "  acodrill plan plate.dxf -o plate.nc --algorithm as --local-search none --ants 125 --iterations 125\n"
       "                                                            the thesis's Ant System\n"
+      "  acodrill plan pcb2gcode-drill.ngc -o shorter.ngc --keep-style\n"
+      "                                                            another CAM's program, its holes reordered per tool\n"
       "Inputs: DXF, Excellon, Gerber (RS-274X/X2; RS-274D with --apertures), XML hole map, CSV (x,y,diameter mm),\n"
-      "TSPLIB; '-' reads stdin.");
-  plan_cmd->add_option("input", plan.input, "Input file (DXF, Excellon, Gerber, XML, CSV, TSPLIB) or - for stdin")->required();
+      "TSPLIB, a G-code drilling program (canned or expanded: its tools, cycles and depths are kept); '-' reads stdin.");
+  plan_cmd->add_option("input", plan.input, "Input file (DXF, Excellon, Gerber, XML, CSV, TSPLIB, G-code program) or - for stdin")->required();
   plan_cmd->add_option("-o,--output", plan.output, "Program to write (- = stdout)")->required();
   plan_cmd->add_option("--report", plan.report, "Write a JSON report: holes, tools, travel, time, solver");
   plan_cmd->add_option("--svg", plan.svg, "Write a picture of the route (SVG)");
@@ -467,7 +567,14 @@ int main(int argc, char** argv) {
                        "bounding box, drawing (keep CAD coordinates) or X,Y (a point of the drawing, mm). The "
                        "machinist sets the work offset (G54) there; the program header says where it is");
   plan_cmd->add_option("--dialect", plan.dialect, "haas (default) | fanuc | linuxcnc");
-  plan_cmd->add_option("--units", plan.units, "Program units: mm (default) | inch");
+  plan_cmd->add_flag("--keep-style", plan.keep_style,
+                     "Program input: keep the input's own lines and style (canned stays canned, expanded stays "
+                     "expanded; line numbers renumbered), rewriting only where its holes are drilled");
+  plan_cmd->add_option("--min-spacing", plan.min_spacing,
+                       "Program input: holes of a tool closer than MM (or than the drill, where the program names "
+                       "its diameter) overlap and are drilled together in their input order (default 0)")
+      ->check(CLI::Range(0.0, 1e4));
+  plan_cmd->add_option("--units", plan.units, "Program units: mm (default; a program input keeps its own) | inch");
   plan_cmd->add_option("--tools", plan.tools, "Tool table (JSON); default: one tool per diameter");
   plan_cmd->add_option("--machine", plan.machine, "Machine profile (JSON); default: HAAS VF-2 class");
   plan_cmd->add_option("--material", plan.material, "steel | aluminium | pcb: feeds and speeds of generated tools (default steel; pcb for Excellon and Gerber input)");

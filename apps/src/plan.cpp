@@ -428,8 +428,11 @@ RouteStats route_stats(const aco::HoleSet& holes, const std::vector<ToolGroup>& 
     st.time_s += rapid_time_s(100.0, m.rapid_z_mm_min, m.accel_mm_s2);
     st.tool_time_s.push_back(st.time_s - before);
   }
-  st.travel_mm += aco::euclidean(at, m.start);
-  st.time_s += xy_move_time(at, m.start, m);
+  if (options.return_at_end) {
+    const aco::Point2 finish = options.finish.value_or(m.start);
+    st.travel_mm += aco::euclidean(at, finish);
+    st.time_s += xy_move_time(at, finish, m);
+  }
   return st;
 }
 
@@ -491,6 +494,60 @@ RouteUnits route_units(const aco::HoleSet& holes, const aco::Order& input_order)
 
 }  // namespace
 
+void order_groups(const aco::HoleSet& holes, PlanResult& result, const PlanOptions& options) {
+  const Machine& m = options.machine;
+  const aco::Point2 finish = options.finish.value_or(m.start);
+  // Each tool's holes as an open path from where the previous tool ended; the
+  // last one ends at the start position, so the return home is optimised too.
+  const aco::Metric metric = options.objective == Objective::Time && !m.linear_rapids ? aco::Metric::Chebyshev
+                                                                                      : aco::Metric::Euclidean;
+  aco::Point2 at = m.start, at_nn = m.start;
+  result.solver = aco::resolve(options.solver, holes.size());
+  for (std::size_t g = 0; g < result.groups.size(); ++g) {
+    ToolGroup& group = result.groups[g];
+    const bool last = g + 1 == result.groups.size();
+    aco::Problem p;
+    p.metric = metric;
+    p.shape = aco::Shape::OpenPath;
+    p.start = at;
+    if (last && options.return_at_end) p.end = finish;
+    // The route's stops: a hole, or a chain (a drilled slot's holes) drilled
+    // together in its own order, stopping at the chain's centroid.
+    const RouteUnits units = route_units(holes, group.input_order);
+    p.points = units.points;
+    // --time-limit bounds the whole run: each tool gets its share by hole count.
+    aco::Params params = options.solver;
+    if (params.time_limit_s > 0) {
+      params.time_limit_s = std::max(0.01, options.solver.time_limit_s * static_cast<double>(group.input_order.size()) /
+                                               static_cast<double>(holes.size()));
+    }
+    group.solution = aco::solve(p, params);
+    group.optimized = units.expand(group.solution.order);
+    aco::Problem pnn = p;
+    pnn.start = at_nn;
+    group.nearest_neighbor = units.expand(aco::nearest_neighbor(pnn));
+    at = holes[group.optimized.back()].center;
+    at_nn = holes[group.nearest_neighbor.back()].center;
+    result.iterations += group.solution.iterations;
+    result.solver_wall_s += group.solution.wall_s;
+    if (result.thread_busy_s.size() < group.solution.thread_busy_s.size()) {
+      result.thread_busy_s.resize(group.solution.thread_busy_s.size(), 0.0);
+    }
+    for (std::size_t k = 0; k < group.solution.thread_busy_s.size(); ++k) {
+      result.thread_busy_s[k] += group.solution.thread_busy_s[k];
+    }
+  }
+  std::vector<const aco::Order*> in, nn, opt;
+  for (const ToolGroup& g : result.groups) {
+    in.push_back(&g.input_order);
+    nn.push_back(&g.nearest_neighbor);
+    opt.push_back(&g.optimized);
+  }
+  result.input_order = route_stats(holes, result.groups, in, options);
+  result.nearest_neighbor = route_stats(holes, result.groups, nn, options);
+  result.optimized = route_stats(holes, result.groups, opt, options);
+}
+
 PlanResult plan_job(const aco::HoleSet& holes, const PlanOptions& options, const std::string& source) {
   const Machine& m = options.machine;
   // A hole without a diameter would become a "0.000 MM DRILL": the user says
@@ -551,55 +608,7 @@ PlanResult plan_job(const aco::HoleSet& holes, const PlanOptions& options, const
                                      [](const ToolGroup& g) { return g.input_order.empty(); }),
                       result.groups.end());
 
-  // Each tool's holes as an open path from where the previous tool ended; the
-  // last one ends at the start position, so the return home is optimised too.
-  const aco::Metric metric = options.objective == Objective::Time && !m.linear_rapids ? aco::Metric::Chebyshev
-                                                                                      : aco::Metric::Euclidean;
-  aco::Point2 at = m.start, at_nn = m.start;
-  result.solver = aco::resolve(options.solver, holes.size());
-  for (std::size_t g = 0; g < result.groups.size(); ++g) {
-    ToolGroup& group = result.groups[g];
-    const bool last = g + 1 == result.groups.size();
-    aco::Problem p;
-    p.metric = metric;
-    p.shape = aco::Shape::OpenPath;
-    p.start = at;
-    if (last) p.end = m.start;
-    // The route's stops: a hole, or a chain (a drilled slot's holes) drilled
-    // together in its own order, stopping at the chain's centroid.
-    const RouteUnits units = route_units(holes, group.input_order);
-    p.points = units.points;
-    // --time-limit bounds the whole run: each tool gets its share by hole count.
-    aco::Params params = options.solver;
-    if (params.time_limit_s > 0) {
-      params.time_limit_s = std::max(0.01, options.solver.time_limit_s * static_cast<double>(group.input_order.size()) /
-                                               static_cast<double>(holes.size()));
-    }
-    group.solution = aco::solve(p, params);
-    group.optimized = units.expand(group.solution.order);
-    aco::Problem pnn = p;
-    pnn.start = at_nn;
-    group.nearest_neighbor = units.expand(aco::nearest_neighbor(pnn));
-    at = holes[group.optimized.back()].center;
-    at_nn = holes[group.nearest_neighbor.back()].center;
-    result.iterations += group.solution.iterations;
-    result.solver_wall_s += group.solution.wall_s;
-    if (result.thread_busy_s.size() < group.solution.thread_busy_s.size()) {
-      result.thread_busy_s.resize(group.solution.thread_busy_s.size(), 0.0);
-    }
-    for (std::size_t k = 0; k < group.solution.thread_busy_s.size(); ++k) {
-      result.thread_busy_s[k] += group.solution.thread_busy_s[k];
-    }
-  }
-  std::vector<const aco::Order*> in, nn, opt;
-  for (const ToolGroup& g : result.groups) {
-    in.push_back(&g.input_order);
-    nn.push_back(&g.nearest_neighbor);
-    opt.push_back(&g.optimized);
-  }
-  result.input_order = route_stats(holes, result.groups, in, options);
-  result.nearest_neighbor = route_stats(holes, result.groups, nn, options);
-  result.optimized = route_stats(holes, result.groups, opt, options);
+  order_groups(holes, result, options);
   return result;
 }
 

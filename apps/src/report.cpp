@@ -65,6 +65,14 @@ std::string report_json(const aco::HoleSet& holes, const PlanResult& plan, const
     for (const formats::Note& n : ctx.input->skipped) skipped.push_back({{"line", n.line}, {"what", n.message}});
     j["not_drilled"] = skipped;
   }
+  if (ctx.program_input) {
+    // travel_mm.input_order and machining_time_s.input_order are the input program's own.
+    const auto& pi = *ctx.program_input;
+    j["program_input"] = {{"runs", pi.runs},
+                          {"overlapping_holes_in_input_order", pi.overlapping_holes},
+                          {"overlap_groups", pi.overlap_groups},
+                          {"style", pi.style}};
+  }
   j["source"] = ctx.source;
   j["program"] = ctx.program;
   return j.dump(2) + "\n";

@@ -207,6 +207,8 @@ class Reader {
     std::string extra;
     std::optional<Motion> motion;
     int cycle_code = 0;
+    bool g43 = false;
+    std::optional<int> h_word;
     bool g80 = false, dwell = false, home = false, machine = false, change = false, stop = false;
     std::optional<int> spindle_dir;
     for (const Word& w : words) {
@@ -240,6 +242,8 @@ class Reader {
             case 100: case 520: case 920: case 510: case 680:
               if (options_.drilling_only) refuse("G" + w.text + " changes the coordinate system");
               break;
+            case 430: g43 = true; break;
+            case 490: length_offset_ = 0; break;
             case 410: case 420: if (options_.drilling_only) refuse("cutter compensation (G" + w.text + ")"); break;
             case 650: if (options_.drilling_only) refuse("a macro call (G65)"); break;
             case 760: if (options_.drilling_only) refuse("G76 (threading or fine boring)"); break;
@@ -257,6 +261,9 @@ class Reader {
             case 50: spindle_dir = 0; break;
             case 60: change = true; break;
             case 290: rigid_ = true; break;
+            case 70: coolant_ = 7; break;
+            case 80: coolant_ = 8; break;
+            case 90: coolant_ = 0; break;
             case 970: case 980: case 990: if (options_.drilling_only) refuse("a subprogram call (M" + w.text + ")"); break;
             default: break;
           }
@@ -285,9 +292,11 @@ class Reader {
         case 'A': case 'B': case 'C': case 'U': case 'V': case 'W':
           if (options_.drilling_only) refuse(std::string("the ") + w.letter + " axis");
           break;
-        default: break;  // H, D: offsets registers
+        case 'H': h_word = static_cast<int>(w.value); break;
+        default: break;  // D: a radius register
       }
     }
+    if (g43) length_offset_ = h_word.value_or(selected_tool_);
     // Order of execution: tool change, spindle, dwell, then the motion, then stops.
     if (change) {
       boundary_ = true;
@@ -360,6 +369,8 @@ class Reader {
       run.pause = pending_pause_;
       run.message = last_comment_;
       run.work_offset = work_offset_;
+      run.length_offset = length_offset_;
+      run.coolant = coolant_;
       out_.runs.push_back(std::move(run));
       boundary_ = pending_change_ = pending_pause_ = false;
     }
@@ -536,7 +547,7 @@ class Reader {
   bool cycle_started_ = false, have_r_ = false, have_z_ = false;
   std::optional<double> initial_z_;
   double feed_ = 0.0, rpm_ = 0.0;
-  int spindle_ = 0, selected_tool_ = 0, work_offset_ = 54;
+  int spindle_ = 0, selected_tool_ = 0, work_offset_ = 54, length_offset_ = 0, coolant_ = 0;
   bool wx_given_ = false, wy_given_ = false;  // the block being run has X / Y words
   bool boundary_ = false, pending_change_ = false, pending_pause_ = false;
   std::string last_comment_;

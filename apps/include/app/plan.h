@@ -118,6 +118,10 @@ struct PlanOptions {
   Material material = Material::Steel;
   double thickness_mm = 6.35;      // the thesis's 1/4" plate
   gcode::ProgramSettings program;
+  // After the last hole the spindle returns to `finish` (default: the
+  // machine's start) — or, for a program that ends over its last hole, stays.
+  bool return_at_end = true;
+  std::optional<aco::Point2> finish;
 };
 
 struct ToolGroup {
@@ -157,6 +161,11 @@ void check_travel(const aco::HoleSet& holes, const Machine& machine, const std::
 // of the table takes, a hole no tool fits, one under a clamp
 // or holes that do not fit the machine's travel (check_travel).
 PlanResult plan_job(const aco::HoleSet& holes, const PlanOptions& options, const std::string& source);
+
+// Orders every group of `result` (its input_order set): each an open path
+// from where the previous one ended, the last back to the finish; fills the
+// orders, the solutions and the travel and time of each variant.
+void order_groups(const aco::HoleSet& holes, PlanResult& result, const PlanOptions& options);
 
 // The drilling passes of a plan, ready for gcode::write_program (with the
 // G98 retracts the machine's clamps need).

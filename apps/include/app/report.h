@@ -1,6 +1,7 @@
 #pragma once
 // Machine-readable results: the --report JSON (keys per ../shared/interface.md,
 // more may be added, none renamed) and the --convergence CSV.
+#include <optional>
 #include <string>
 
 #include "app/plan.h"
@@ -15,6 +16,13 @@ struct ReportContext {
   Placement placement;  // where program zero sits
   std::string name;     // job name: the input's stem or its own name
   const formats::LoadedHoles* input = nullptr;  // slots drilled, features not drilled
+  // A reordered drilling program (issue 14): how it was read and written.
+  struct ProgramInput {
+    std::size_t runs = 0;
+    std::size_t overlapping_holes = 0, overlap_groups = 0;  // kept in input order
+    std::string style;                                      // "dialect" or "keep"
+  };
+  std::optional<ProgramInput> program_input;
 };
 
 std::string report_json(const aco::HoleSet& holes, const PlanResult& plan, const ReportContext& context);

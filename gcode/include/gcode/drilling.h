@@ -15,12 +15,14 @@
 #include <cstdint>
 #include <map>
 #include <optional>
+#include <ostream>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "aco/geometry.h"
 #include "gcode/interpreter.h"
+#include "gcode/program.h"
 
 namespace gcode {
 
@@ -70,6 +72,8 @@ struct ToolRun {
   bool pause = false;                    // an M0/M1 came before the holes (manual tool change)
   std::string message;                   // the last comment before the holes (what the operator was told)
   int work_offset = 54;                  // G54..G59 in force
+  int length_offset = 0;                 // H of the G43 in force (0: none)
+  int coolant = 0;                       // 7 (M7), 8 (M8) or 0 (off)
   std::vector<ProgramHole> holes;
 };
 
@@ -96,6 +100,27 @@ struct ReadOptions {
 
 // Reads the whole program. Throws ProgramError with the line for what it cannot read.
 DrillingProgram read_drilling(std::string_view text, const ReadOptions& options = {});
+
+struct DrillingWriteSettings {
+  Dialect dialect = Dialect::Haas;
+  bool inch = false;                       // program units
+  int decimals = 3;                        // of every length and feed
+  int program_number = 1001;
+  std::string program_name = "ACODRILL";
+  std::vector<std::string> header_comments;
+  // Keep the input's own style: every line of `source` outside the stretches
+  // where a run drills is copied as it is; each stretch is written anew, in
+  // the new order, canned holes canned and expanded ones expanded.
+  bool keep_style = false;
+  std::string_view source;
+};
+
+// Writes `program` (the input's runs, each with its holes reordered): the
+// dialect's skeleton around them, or the input's own lines (keep_style).
+// Every hole keeps its cycle words or its Z moves; between holes the spindle
+// travels at the highest plane the input travelled at between that run's
+// holes (G98 to it), or at R where the input did so throughout (G99).
+void write_drilling(std::ostream& out, const DrillingProgram& program, const DrillingWriteSettings& settings);
 
 // True when the text reads as a G-code program rather than another hole file:
 // blocks of G/M words with Z moves, no Excellon header, no Gerber '*' blocks.

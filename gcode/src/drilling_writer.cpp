@@ -1,0 +1,351 @@
+// Writes a reordered drilling program. Each hole is made exactly as the input
+// made it (its cycle words, or its Z moves); what changes is the order, and
+// the plane the spindle crosses between holes, chosen so that no reordered
+// move runs lower than the input ever travelled over that run's holes.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+
+#include "gcode/drilling.h"
+
+namespace gcode {
+
+namespace {
+
+constexpr double kMmPerInch = 25.4;
+
+std::string plain_comment(std::string text) {
+  for (char& ch : text) {
+    if (ch == '(' || ch == ')') ch = '/';
+    else if (ch == '\n' || ch == '\r') ch = ' ';
+    else if (static_cast<unsigned char>(ch) >= 128) ch = '?';
+    else ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
+  }
+  if (text.size() > 100) text.resize(100);
+  return text;
+}
+
+std::string rpm_text(double rpm) {
+  std::string s = format_number(rpm, 0);
+  return s.substr(0, s.size() - 1);  // "12000." -> "12000"
+}
+
+// The plane a run's holes are joined at, and whether that is each hole's R (G99).
+struct Travel {
+  double z_mm = 0.0;
+  bool at_r = false;
+};
+
+Travel travel_of(const ToolRun& run) {
+  double z = -std::numeric_limits<double>::infinity();
+  bool all_g99 = true, any_canned = false, any_expanded = false;
+  for (const ProgramHole& h : run.holes) {
+    if (h.arrive_z_mm) z = std::max(z, *h.arrive_z_mm);
+    if (h.cycle.code != 0) {
+      any_canned = true;
+      z = std::max(z, h.cycle.r_mm);
+      if (h.cycle.retract_initial) all_g99 = false;
+    } else {
+      any_expanded = true;
+    }
+  }
+  if (!std::isfinite(z)) {
+    // No hole says where the spindle crossed to it (each came from machine Z
+    // home): the highest rapid the holes make.
+    for (const ProgramHole& h : run.holes) {
+      for (const ZMove& m : h.cycle.moves) {
+        if (m.kind == ZMove::Rapid) z = std::max(z, m.z_mm);
+      }
+    }
+  }
+  if (!std::isfinite(z)) z = 0.0;
+  Travel t{z, false};
+  if (any_canned && !any_expanded && all_g99) {
+    t.at_r = std::all_of(run.holes.begin(), run.holes.end(), [&](const ProgramHole& h) { return h.cycle.r_mm == z; });
+  }
+  return t;
+}
+
+class Writer {
+ public:
+  Writer(std::ostream& out, const DrillingWriteSettings& s) : out_(out), s_(s) {
+    two_digit_ = !s.keep_style || s.source.find("G00") != std::string_view::npos ||
+                 s.source.find("G01") != std::string_view::npos;
+  }
+
+  std::string n(double mm) const { return format_number(s_.inch ? mm / kMmPerInch : mm, s_.decimals); }
+  const char* rapid() const { return two_digit_ ? "G00" : "G0"; }
+  const char* feed() const { return two_digit_ ? "G01" : "G1"; }
+
+  void line(const std::string& text) { out_ << text << '\n'; }
+
+  std::string z_home() const {
+    if (s_.dialect == Dialect::Fanuc) return "G91 G28 Z0.\nG90";
+    return "G53 G00 Z0.";
+  }
+
+  // The holes of one run, from wherever the spindle is (`z`: nullopt = not known).
+  // `at_first`: the spindle is already over the first hole.
+  // `close_cycle`: end with G80 (else the lines after the stretch do, as in the input).
+  void holes(const ToolRun& run, std::optional<double> z, bool at_first, bool close_cycle) {
+    const Travel travel = travel_of(run);
+    bool cycle_on = false;
+    const HoleCycle* words = nullptr;
+    std::optional<double> last_feed;
+    for (std::size_t i = 0; i < run.holes.size(); ++i) {
+      const ProgramHole& h = run.holes[i];
+      const HoleCycle& c = h.cycle;
+      const std::string xy = "X" + n(h.at.x) + " Y" + n(h.at.y);
+      if (c.code == 0) {
+        if (cycle_on) {
+          line("G80");
+          cycle_on = false;
+          words = nullptr;
+        }
+        if (!z || *z < travel.z_mm - 1e-9) line(std::string(rapid()) + " Z" + n(travel.z_mm));
+        if (!(i == 0 && at_first)) line(std::string(rapid()) + " " + xy);
+        z = travel.z_mm;
+        for (const ZMove& m : c.moves) {
+          switch (m.kind) {
+            case ZMove::Rapid: line(std::string(rapid()) + " Z" + n(m.z_mm)); break;
+            case ZMove::Feed: {
+              std::string text = std::string(feed()) + " Z" + n(m.z_mm);
+              if (!last_feed || *last_feed != m.feed_mm_min) text += " F" + n(m.feed_mm_min);
+              last_feed = m.feed_mm_min;
+              line(text);
+              break;
+            }
+            case ZMove::Dwell: line("G04 P" + m.dwell); break;
+          }
+          if (m.kind != ZMove::Dwell) z = m.z_mm;
+        }
+        continue;
+      }
+      if (!cycle_on && (!z || std::fabs(*z - travel.z_mm) > 1e-9)) {
+        // The initial plane (G98's retract) is where the cycle starts.
+        line(std::string(rapid()) + " Z" + n(travel.z_mm));
+        z = travel.z_mm;
+      }
+      if (cycle_on && words && words->same_words(c)) {
+        line(xy);
+        continue;
+      }
+      if (c.rigid && s_.dialect != Dialect::LinuxCnc) {
+        line("M29 S" + rpm_text(run.spindle_rpm));
+      }
+      std::string text = std::string(travel.at_r ? "G99" : "G98") + " G" + std::to_string(c.code) + " " + xy + " Z" +
+                         n(c.z_mm) + " R" + n(c.r_mm);
+      if (c.q_mm) text += " Q" + n(*c.q_mm);
+      if (!c.p.empty()) text += " P" + c.p;
+      if (!c.extra.empty()) text += " " + c.extra;
+      text += " F" + n(c.feed_mm_min);
+      line(text);
+      cycle_on = true;
+      words = &c;
+      last_feed = c.feed_mm_min;
+    }
+    if (cycle_on && close_cycle) line("G80");
+  }
+
+ private:
+  std::ostream& out_;
+  const DrillingWriteSettings& s_;
+  bool two_digit_ = true;
+};
+
+void write_dialect(std::ostream& out, const DrillingProgram& p, const DrillingWriteSettings& s) {
+  Writer w(out, s);
+  w.line("%");
+  char oline[16];
+  std::snprintf(oline, sizeof oline, "O%05d", s.program_number);
+  w.line(std::string(oline) + " (" + plain_comment(s.program_name) + ")");
+  for (const std::string& text : s.header_comments) w.line("(" + plain_comment(text) + ")");
+  for (const ToolRun& run : p.runs) {
+    if (run.tool <= 0) continue;
+    std::string d = run.diameter_mm ? " D=" + w.n(*run.diameter_mm) + (s.inch ? " IN" : " MM") : "";
+    w.line("(T" + std::to_string(run.tool) + d + " - " + std::to_string(run.holes.size()) + " HOLES)");
+  }
+  w.line("G00 G17 G40 G49 G80 G90");
+  w.line(s.inch ? "G20" : "G21");
+  w.line(w.z_home());
+  for (const ToolRun& run : p.runs) {
+    if (run.holes.empty()) continue;
+    w.line("(" + (run.tool > 0 ? "T" + std::to_string(run.tool) + ", " : std::string("NO TOOL NUMBER, ")) +
+           std::to_string(run.holes.size()) + " HOLES" + (run.message.empty() ? "" : ": " + plain_comment(run.message)) + ")");
+    if (run.tool > 0) w.line("T" + std::to_string(run.tool) + (run.tool_change ? " M06" : ""));
+    if (run.pause) w.line("M00");
+    const ProgramHole& first = run.holes.front();
+    std::string move = "G00 G90 G" + std::to_string(run.work_offset) + " X" + w.n(first.at.x) + " Y" + w.n(first.at.y);
+    if (run.spindle != 0) {
+      move += (run.spindle_rpm > 0 ? " S" + rpm_text(run.spindle_rpm) : std::string()) + (run.spindle == 4 ? " M04" : " M03");
+    }
+    w.line(move);
+    const Travel travel = travel_of(run);
+    std::string down = run.length_offset > 0 ? "G43 H" + std::string(run.length_offset < 10 ? "0" : "") +
+                                                   std::to_string(run.length_offset) + " Z" + w.n(travel.z_mm)
+                                             : "G00 Z" + w.n(travel.z_mm);
+    if (run.coolant) down += run.coolant == 7 ? " M07" : " M08";
+    w.line(down);
+    w.holes(run, travel.z_mm, true, true);
+    if (run.coolant) w.line("M09");
+    if (run.spindle != 0) w.line("M05");
+    w.line(w.z_home());
+  }
+  if (p.end) w.line("G00 X" + w.n(p.end->x) + " Y" + w.n(p.end->y));
+  w.line("M30");
+  w.line("%");
+}
+
+std::string code_of(std::string_view raw) {
+  std::string code;
+  int depth = 0;
+  for (char ch : raw) {
+    if (ch == '(') ++depth;
+    else if (ch == ')') depth = std::max(0, depth - 1);
+    else if (ch == ';' && depth == 0) break;
+    else if (depth == 0) code += static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
+  }
+  return code;
+}
+
+// Does the line only move, cycle or set cycle words (what a regenerated
+// stretch writes anew), or does it also do something else (G43, M8, S...)?
+bool hole_making_only(std::string_view raw) {
+  const std::string code = code_of(raw);
+  for (std::size_t i = 0; i < code.size(); ++i) {
+    const char c = code[i];
+    if (!std::isalpha(static_cast<unsigned char>(c))) continue;
+    if (std::string_view("XYZRQPFIJKELN").find(c) != std::string_view::npos) continue;
+    if (c != 'G') return false;
+    double g = std::strtod(code.c_str() + i + 1, nullptr);
+    const int k = static_cast<int>(std::lround(g * 10));
+    static const int allowed[] = {0, 10, 40, 730, 740, 800, 810, 820, 830, 840, 850, 860, 870, 880, 890, 900, 980, 990};
+    if (std::find(std::begin(allowed), std::end(allowed), k) == std::end(allowed)) return false;
+  }
+  return true;
+}
+
+// An axis word without G0/G1 (or a cycle) on the line.
+bool moves_without_motion_word(std::string_view raw) {
+  const std::string code = code_of(raw);
+  bool axis = false;
+  for (std::size_t i = 0; i < code.size(); ++i) {
+    const char c = code[i];
+    if (c == 'X' || c == 'Y' || c == 'Z') axis = true;
+    if (c == 'G') {
+      const int k = static_cast<int>(std::lround(std::strtod(code.c_str() + i + 1, nullptr) * 10));
+      if (k == 0 || k == 10 || k == 280 || k == 300 || k == 530 || (k >= 730 && k <= 890)) return false;
+    }
+  }
+  return axis;
+}
+
+void write_keep_style(std::ostream& out, const DrillingProgram& p, const DrillingWriteSettings& s) {
+  std::vector<std::string_view> lines;
+  for (std::size_t pos = 0; pos <= s.source.size();) {
+    std::size_t nl = s.source.find('\n', pos);
+    if (nl == std::string_view::npos) nl = s.source.size();
+    std::string_view l = s.source.substr(pos, nl - pos);
+    if (!l.empty() && l.back() == '\r') l.remove_suffix(1);
+    lines.push_back(l);
+    pos = nl + 1;
+  }
+  if (!lines.empty() && lines.back().empty()) lines.pop_back();
+  if (!lines.empty() && lines[0].substr(0, 3) == "\xEF\xBB\xBF") lines[0].remove_prefix(3);
+  // Each run's stretch: from the move onto its first hole to its last hole's last line.
+  struct Span {
+    std::uint32_t first, last;
+    const ToolRun* run;
+  };
+  std::vector<Span> spans;
+  for (const ToolRun& run : p.runs) {
+    if (run.holes.empty()) continue;
+    Span sp{run.holes[0].first_line, run.holes[0].last_line, &run};
+    for (const ProgramHole& h : run.holes) {
+      sp.first = std::min(sp.first, h.first_line);
+      sp.last = std::max(sp.last, h.last_line);
+    }
+    spans.push_back(sp);
+  }
+  std::ostringstream body;
+  Writer w(body, s);
+  std::size_t next = 0;
+  for (std::uint32_t no = 1; no <= lines.size(); ++no) {
+    if (next < spans.size() && no == spans[next].first) {
+      const Span& sp = spans[next++];
+      for (std::uint32_t k = sp.first; k <= sp.last && k <= lines.size(); ++k) {
+        if (hole_making_only(lines[k - 1])) continue;
+        // The line's move ran in the input's modal rapid, set by a line now
+        // rewritten: say it (G43 Z10. H1 -> G00 G43 Z10. H1).
+        std::string kept(lines[k - 1]);
+        if (moves_without_motion_word(kept)) {
+          std::size_t at = kept.find_first_not_of(" \t");
+          if (at != std::string::npos && (kept[at] == 'N' || kept[at] == 'n')) {
+            at = kept.find_first_not_of("0123456789", at + 1);
+            at = at == std::string::npos ? kept.size() : kept.find_first_not_of(" \t", at);
+          }
+          kept.insert(at == std::string::npos ? 0 : at, std::string(w.rapid()) + " ");
+        }
+        body << kept << '\n';
+      }
+      // The input's own lines after the stretch cancel its cycle when its last hole was canned.
+      const ProgramHole* last = &sp.run->holes[0];
+      for (const ProgramHole& h : sp.run->holes) {
+        if (h.last_line > last->last_line) last = &h;
+      }
+      w.holes(*sp.run, std::nullopt, false, last->cycle.code == 0);
+      no = sp.last;
+      continue;
+    }
+    body << lines[no - 1] << '\n';
+  }
+  if (!p.uses_line_numbers) {
+    out << body.str();
+    return;
+  }
+  // Line numbers as the input counted them, on every line that has code.
+  long start = 10, step = 10;
+  std::vector<long> seen;
+  for (std::string_view l : lines) {
+    std::size_t i = l.find_first_not_of(" \t");
+    if (i == std::string_view::npos || (l[i] != 'N' && l[i] != 'n')) continue;
+    seen.push_back(std::strtol(std::string(l.substr(i + 1, 12)).c_str(), nullptr, 10));
+    if (seen.size() == 2) break;
+  }
+  if (!seen.empty()) start = seen[0];
+  if (seen.size() == 2 && seen[1] > seen[0]) step = seen[1] - seen[0];
+  std::istringstream in(body.str());
+  long number = start;
+  for (std::string l; std::getline(in, l);) {
+    std::size_t i = l.find_first_not_of(" \t");
+    if (i != std::string::npos && (l[i] == 'N' || l[i] == 'n')) {
+      std::size_t j = i + 1;
+      while (j < l.size() && std::isdigit(static_cast<unsigned char>(l[j]))) ++j;
+      while (j < l.size() && (l[j] == ' ' || l[j] == '\t')) ++j;
+      l = l.substr(j);
+      i = 0;
+    }
+    const bool code = i != std::string::npos && !l.empty() && l[0] != '(' && l[0] != '%' && l[0] != ';';
+    if (code) {
+      out << 'N' << number << ' ' << l << '\n';
+      number += step;
+    } else {
+      out << l << '\n';
+    }
+  }
+}
+
+}  // namespace
+
+void write_drilling(std::ostream& out, const DrillingProgram& program, const DrillingWriteSettings& settings) {
+  if (settings.program_number < 1 || settings.program_number > 99999) {
+    throw std::invalid_argument("program number must be 1..99999");
+  }
+  if (settings.keep_style) write_keep_style(out, program, settings);
+  else write_dialect(out, program, settings);
+}
+
+}  // namespace gcode
