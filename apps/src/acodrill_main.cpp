@@ -497,6 +497,19 @@ int cmd_verify(const std::string& program_path, const std::string& holes_path, c
   if (holes_path.empty()) return 0;
 
   app::LoadedHoles expected = app::load_holes(holes_path, to_input_options(in_args));
+  if (expected.program) {
+    // Another program as the hole source: the same holes, tools and depths, where it put them.
+    const std::vector<std::string> faults = app::check_same_holes(run, *expected.program);
+    if (faults.empty()) {
+      std::printf("ok: %zu holes of %s drilled once each with the same tool and depth\n", expected.program->hole_count(),
+                  holes_path.c_str());
+      return 0;
+    }
+    std::printf("faults %zu\n", faults.size());
+    for (const auto& f : faults) std::printf("fault: %s\n", f.c_str());
+    if (!quiet) std::fprintf(stderr, "acodrill: %s: %zu fault(s), first: %s\n", program_path.c_str(), faults.size(), faults[0].c_str());
+    return 1;
+  }
   // The holes as the program should drill them: moved to the program zero
   // --origin names, else the one the program states (acodrill writes it in its
   // header), else where they are (another CAM's program).

@@ -1,7 +1,9 @@
 #include "app/verify.h"
 
 #include <cmath>
+#include <algorithm>
 #include <map>
+#include <tuple>
 
 #include "gcode/program.h"
 
@@ -68,6 +70,59 @@ std::vector<std::string> check_drilled(const gcode::Interpretation& run, const a
                        gcode::format_number(run.holes[i].x_mm, 3) + ", " + gcode::format_number(run.holes[i].y_mm, 3) +
                        "), which is not an input hole");
     }
+  }
+  return faults;
+}
+
+std::vector<std::string> check_same_holes(const gcode::Interpretation& run, const gcode::DrillingProgram& expected) {
+  // Both programs' printed precision: positions and depths agree within it.
+  const double tol = (run.inch || expected.inch ? 0.00006 * 25.4 : 0.0006) + 1e-6;
+  struct Key {
+    int tool;
+    double x, y, z;
+    std::uint32_t line;
+  };
+  std::vector<Key> want, got;
+  for (const gcode::ToolRun& r : expected.runs) {
+    for (const gcode::ProgramHole& h : r.holes) want.push_back({r.tool, h.at.x, h.at.y, h.cycle.bottom_mm(), h.line});
+  }
+  for (const auto& h : run.holes) got.push_back({h.tool, h.x_mm, h.y_mm, h.bottom_z_mm, h.line});
+  auto order = [](const Key& a, const Key& b) { return std::tie(a.x, a.y, a.tool, a.z) < std::tie(b.x, b.y, b.tool, b.z); };
+  std::sort(got.begin(), got.end(), order);
+  std::vector<char> used(got.size(), 0);
+  std::vector<std::string> faults;
+  auto at = [](const Key& k) {
+    return "(" + gcode::format_number(k.x, 3) + ", " + gcode::format_number(k.y, 3) + ")";
+  };
+  for (const Key& w : want) {
+    // Candidates: drilled holes within tolerance in X (got is sorted by X).
+    auto lo = std::lower_bound(got.begin(), got.end(), w.x - tol, [](const Key& k, double x) { return k.x < x; });
+    const Key* near = nullptr;
+    std::size_t match = got.size();
+    for (auto it = lo; it != got.end() && it->x <= w.x + tol; ++it) {
+      const std::size_t i = static_cast<std::size_t>(it - got.begin());
+      if (used[i] || std::fabs(it->y - w.y) > tol) continue;
+      if (!near) near = &*it;
+      if (it->tool == w.tool && std::fabs(it->z - w.z) <= tol) {
+        match = i;
+        break;
+      }
+    }
+    if (match < got.size()) {
+      used[match] = 1;
+      continue;
+    }
+    if (!near) {
+      faults.push_back("hole " + at(w) + " of line " + std::to_string(w.line) + " is not drilled");
+    } else {
+      faults.push_back("hole " + at(w) + " of line " + std::to_string(w.line) + " (T" + std::to_string(w.tool) + ", Z" +
+                       gcode::format_number(w.z, 3) + ") is drilled with T" + std::to_string(near->tool) + " to Z" +
+                       gcode::format_number(near->z, 3) + " (line " + std::to_string(near->line) + ")");
+      used[static_cast<std::size_t>(near - got.data())] = 1;
+    }
+  }
+  for (std::size_t i = 0; i < got.size(); ++i) {
+    if (!used[i]) faults.push_back("line " + std::to_string(got[i].line) + " drills " + at(got[i]) + ", which the input program does not");
   }
   return faults;
 }

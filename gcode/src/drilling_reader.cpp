@@ -122,6 +122,7 @@ std::vector<Word> parse_words(std::string_view code, std::uint32_t lineno) {
     if (r.ec != std::errc() || r.ptr != num.data() + num.size() || !std::isfinite(v)) {
       throw ProgramError(lineno, std::string("word ") + letter + " has a bad number \"" + num + "\"");
     }
+    if (std::fabs(v) > 1e9) throw ProgramError(lineno, std::string("word ") + letter + num + " is out of range");
     words.push_back({letter, v, num});
   }
   return words;

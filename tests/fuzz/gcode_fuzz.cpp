@@ -1,9 +1,32 @@
+// Both readings of a program (verify's lenient one, plan's drilling-only one)
+// and, for what reads as drilling, both writers: the reordered program must
+// read back to as many holes as the input has. A mismatch aborts (a finding).
+#include <cstdlib>
+#include <sstream>
+
 #include "fuzz_targets.h"
+#include "gcode/drilling.h"
 #include "gcode/interpreter.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  const std::string_view text = ACO_FUZZ_INPUT(data, size);
   try {
-    gcode::interpret(ACO_FUZZ_INPUT(data, size));
+    gcode::interpret(text);
+  } catch (const gcode::ProgramError&) {
+  }
+  try {
+    const gcode::DrillingProgram p = gcode::read_drilling(text);
+    for (bool keep : {false, true}) {
+      gcode::DrillingWriteSettings s;
+      s.inch = p.inch;
+      s.decimals = p.decimals;
+      s.keep_style = keep;
+      s.source = text;
+      std::ostringstream out;
+      gcode::write_drilling(out, p, s);
+      const gcode::DrillingProgram back = gcode::read_drilling(out.str());
+      if (!keep && back.hole_count() != p.hole_count()) std::abort();
+    }
   } catch (const gcode::ProgramError&) {
   }
   return 0;

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "aco/geometry.h"
+#include "gcode/drilling.h"
 #include "gcode/interpreter.h"
 
 namespace app {
@@ -14,5 +15,10 @@ namespace app {
 // names its tools' diameters ("(T1 D=...)"), concentric holes are told apart
 // by them and a hole drilled with a tool of another diameter is a fault.
 std::vector<std::string> check_drilled(const gcode::Interpretation& run, const aco::HoleSet& expected);
+
+// The same check against another drilling program (issue 14: `verify
+// better.nc --holes PROGRAM.nc`): every hole it drills is drilled as often,
+// at its place, with the same tool number and to the same depth.
+std::vector<std::string> check_same_holes(const gcode::Interpretation& run, const gcode::DrillingProgram& expected);
 
 }  // namespace app
