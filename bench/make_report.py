@@ -23,7 +23,7 @@ def main():
       "(about 25 minutes on 2 cores). Raw data: `docs/bench/`.\n")
     w(f"Machine: {machine.get('cpu')}, {machine.get('cores')} cores, {machine.get('memory')}, {machine.get('os')}, "
       f"{machine.get('compiler')}; commit {machine.get('commit')}.\n")
-    if machine.get("sections") and machine.get("sections") != "thesis targets gap speedup micro":
+    if machine.get("sections") and machine.get("sections") != "thesis targets gap speedup programs micro":
         w(f"That run measured these sections: {machine.get('sections')}; the others keep the CSVs of an earlier "
           "run (`git log docs/bench`).\n")
 
@@ -119,6 +119,28 @@ def main():
           "repetitions, median times. The thesis's own times (C#, Intel Core i7 930, 1-6 processors) beside ours.\n")
         w(open(path).read())
         w("![thesis speedup](bench/plots-thesis/speedup.svg)\n")
+
+    # Other CAMs' drilling programs, reordered (issue 14).
+    path = os.path.join(d, "programs.csv")
+    if os.path.exists(path):
+        runs = rows(path)
+        w("## Other CAMs' drilling programs, reordered\n")
+        w("pcb2gcode 2.5.0's own drill programs (its test boards, `tests/data/real-gcode/`; pcb2gcode orders each "
+          "tool's holes by nearest neighbour and 2-opt under the Chebyshev distance), reordered by "
+          "`acodrill plan PROGRAM -o OUT --threads 2 --seed K`; XY rapid travel of input and output as LinuxCNC's "
+          "`rs274` runs them (`bench/rs274_travel.py`), median over seeds. Holes that overlap (closer than the "
+          "drill) keep their input order, so boards whose holes are mostly drilled slots have little to gain.\n")
+        w("| program | holes | overlapping | input mm | reordered mm (median) | saved % (median) | min..max % | wall s |")
+        w("|---|---:|---:|---:|---:|---:|---|---:|")
+        names = sorted({r["program"] for r in runs}, key=lambda n: -int(next(r["holes"] for r in runs if r["program"] == n)))
+        for n in names:
+            rr = [r for r in runs if r["program"] == n]
+            saved = [float(r["saved_pct"]) for r in rr]
+            big = " **(>100 holes)**" if int(rr[0]["holes"]) > 100 else ""
+            w(f"| {n}{big} | {rr[0]['holes']} | {rr[0]['overlapping']} | {float(rr[0]['input_mm']):.1f} | "
+              f"{statistics.median(float(r['output_mm']) for r in rr):.1f} | {statistics.median(saved):.2f} | "
+              f"{min(saved):.2f}..{max(saved):.2f} | {statistics.median(float(r['wall_s']) for r in rr):.2f} |")
+        w("")
 
     # Microbenchmarks.
     for name, title in [("solver_bench.json", "Solver microbenchmarks"), ("io_bench.json", "Input and output microbenchmarks")]:
