@@ -244,7 +244,7 @@ TEST(gerber_test, what_cannot_be_drilled_is_refused_with_its_line) {
 TEST(gerber_test, rs274d_reads_its_apertures_from_a_list_in_the_common_layouts) {
   const std::string file = "G54D10*\nX010000Y020000D03*\nD11*\nX030000Y020000D03*\nD12*\nX050000Y010000D03*\nM02*\n";
   EXPECT_THAT(error_of(file), ::testing::HasSubstr("t.gbr:1: aperture D10 is not defined (an RS-274D file needs its aperture list: --apertures FILE)"));
-  for (const std::string list : {std::string("D10 C 0.032\nD11 C 0.040\nD12 R 0.060 0.030\n"),
+  for (const std::string& list : {std::string("D10 C 0.032\nD11 C 0.040\nD12 R 0.060 0.030\n"),
                                  std::string("# wheel\nD10,C,0.032\nD11,ROUND,40MIL\nD12,RECT,60,30,MILS\n"),
                                  std::string("UNITS MILS\nD10 CIRCLE 32\n11 ROUND 40 drill\nD12 OBLONG 60 30\n"),
                                  std::string("UNITS MM\nD10 C 0.8128\nD11 C 1.016MM\nD12 O 1.524 0.762\n"),
