@@ -17,39 +17,52 @@
 
 namespace {
 
-struct CanonHole {
-  int tool;
-  double x, y;  // program units
+struct CanonRun {
+  struct Hole {
+    int tool;
+    double x, y, z;  // canon units times the scale read_canon was given
+  };
+  std::vector<Hole> holes;
+  double rapid_xy_mm = 0.0;
 };
 
-// Each run of STRAIGHT_FEEDs at one XY, after the XY or the tool changed, is one hole.
-std::vector<CanonHole> holes_from_canon(const std::string& canon) {
-  std::vector<CanonHole> holes;
+// A hole: downward STRAIGHT_FEEDs at one XY, begun after the XY or the tool
+// changed or after a rapid that went nowhere (a "G0 X Y" to the same place:
+// the same position drilled again).
+CanonRun read_canon(const std::string& canon, double scale) {
+  CanonRun out;
   static const std::regex call(R"((STRAIGHT_TRAVERSE|STRAIGHT_FEED|SELECT_TOOL)\(([^)]*)\))");
   int tool = 0;
-  double x = 0, y = 0;
-  bool xy_changed = true;
+  double x = 0, y = 0, z = 0;
+  bool fresh = true;
   std::istringstream in(canon);
   for (std::string line; std::getline(in, line);) {
     std::smatch m;
     if (!std::regex_search(line, m, call)) continue;
     if (m[1] == "SELECT_TOOL") {
       tool = std::stoi(m[2]);
-      xy_changed = true;  // concentric holes: the next tool may start where the last one ended
+      fresh = true;
       continue;
     }
     std::vector<double> v;
     std::istringstream args(m[2]);
-    for (std::string a; std::getline(args, a, ',');) v.push_back(std::stod(a));
-    if (std::fabs(v[0] - x) > 1e-9 || std::fabs(v[1] - y) > 1e-9) xy_changed = true;
+    for (std::string a; std::getline(args, a, ',');) v.push_back(std::stod(a) * scale);
+    const bool xy_moved = std::fabs(v[0] - x) > 1e-9 || std::fabs(v[1] - y) > 1e-9;
+    if (m[1] == "STRAIGHT_TRAVERSE") {
+      out.rapid_xy_mm += std::hypot(v[0] - x, v[1] - y);
+      if (xy_moved || std::fabs(v[2] - z) <= 1e-9) fresh = true;
+    } else if (xy_moved) {
+      fresh = true;
+    } else if (v[2] < z - 1e-9) {
+      if (fresh) out.holes.push_back({tool, v[0], v[1], v[2]});
+      fresh = false;
+      out.holes.back().z = std::min(out.holes.back().z, v[2]);
+    }
     x = v[0];
     y = v[1];
-    if (m[1] == "STRAIGHT_FEED" && xy_changed) {
-      holes.push_back({tool, x, y});
-      xy_changed = false;
-    }
+    z = v[2];
   }
-  return holes;
+  return out;
 }
 
 bool have_rs274() { return std::system("command -v rs274 >/dev/null 2>&1") == 0; }
@@ -86,7 +99,7 @@ void check_program(const std::string& program_path, const std::string& sample, b
                          testutil::shell_quote(program_path));
   ASSERT_EQ(r.code, 0) << what << ": rs274 rejected the program:\n" << r.err;
   EXPECT_EQ(r.err.find("error"), std::string::npos) << r.err;
-  std::vector<CanonHole> canon = holes_from_canon(r.out);
+  const std::vector<CanonRun::Hole> canon = read_canon(r.out, 1.0).holes;  // program units
   if (holes_csv.empty()) holes_csv = sample.substr(0, sample.size() - 4) + ".holes.csv";
   aco::HoleSet expected = testutil::read_holes_csv(testutil::slurp(holes_csv));
   ASSERT_EQ(canon.size(), expected.size()) << what;
@@ -299,54 +312,6 @@ TEST(linuxcnc_test, gerber_drill_files_plan_to_programs_rs274_reads_back) {
 // longer than the input's as rs274 runs that.
 namespace {
 
-struct CanonRun {
-  struct Hole {
-    int tool;
-    double x, y, z;  // mm
-  };
-  std::vector<Hole> holes;
-  double rapid_xy_mm = 0.0;
-};
-
-// A hole: downward STRAIGHT_FEEDs at one XY, begun after the XY or the tool
-// changed or after a rapid that went nowhere (a "G0 X Y" to the same place:
-// the same position drilled again).
-CanonRun read_canon(const std::string& canon, double scale) {
-  CanonRun out;
-  static const std::regex call(R"((STRAIGHT_TRAVERSE|STRAIGHT_FEED|SELECT_TOOL)\(([^)]*)\))");
-  int tool = 0;
-  double x = 0, y = 0, z = 0;
-  bool fresh = true;
-  std::istringstream in(canon);
-  for (std::string line; std::getline(in, line);) {
-    std::smatch m;
-    if (!std::regex_search(line, m, call)) continue;
-    if (m[1] == "SELECT_TOOL") {
-      tool = std::stoi(m[2]);
-      fresh = true;
-      continue;
-    }
-    std::vector<double> v;
-    std::istringstream args(m[2]);
-    for (std::string a; std::getline(args, a, ',');) v.push_back(std::stod(a) * scale);
-    const bool xy_moved = std::fabs(v[0] - x) > 1e-9 || std::fabs(v[1] - y) > 1e-9;
-    if (m[1] == "STRAIGHT_TRAVERSE") {
-      out.rapid_xy_mm += std::hypot(v[0] - x, v[1] - y);
-      if (xy_moved || std::fabs(v[2] - z) <= 1e-9) fresh = true;
-    } else if (xy_moved) {
-      fresh = true;
-    } else if (v[2] < z - 1e-9) {
-      if (fresh) out.holes.push_back({tool, v[0], v[1], v[2]});
-      fresh = false;
-      out.holes.back().z = std::min(out.holes.back().z, v[2]);
-    }
-    x = v[0];
-    y = v[1];
-    z = v[2];
-  }
-  return out;
-}
-
 // What makes a real program readable by rs274, as for the fixtures' own hole
 // lists (../shared/fixtures/real-gcode/README.md): no byte-order mark, no "%"
 // comment lines, a G0 before bare axis words after G80, a program end.
@@ -428,25 +393,6 @@ TEST_P(ReorderedProgram, rs274_reads_the_same_holes_tools_and_depths_and_no_long
   }
 }
 
-namespace {
-std::vector<std::string> real_programs() {
-  std::vector<std::string> out;
-  for (const auto& e : std::filesystem::directory_iterator(testutil::data("real-gcode"))) {
-    const std::string name = e.path().filename().string();
-    const std::string ext = e.path().extension().string();
-    if (name.find(".holes.csv") != std::string::npos) continue;
-    if (ext == ".nc" || ext == ".ngc" || ext == ".tap" || (ext == ".txt" && name.find("drill") != std::string::npos)) {
-      out.push_back(e.path().string());
-    }
-  }
-  std::sort(out.begin(), out.end());
-  return out;
-}
-std::string program_name(const ::testing::TestParamInfo<std::string>& info) {
-  std::string n = std::filesystem::path(info.param).filename().string();
-  for (char& c : n) if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-  return n;
-}
-}  // namespace
 
-INSTANTIATE_TEST_SUITE_P(real_gcode, ReorderedProgram, ::testing::ValuesIn(real_programs()), program_name);
+INSTANTIATE_TEST_SUITE_P(real_gcode, ReorderedProgram, ::testing::ValuesIn(testutil::real_gcode_programs()),
+                         [](const auto& info) { return testutil::file_param_name(info.param); });

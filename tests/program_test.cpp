@@ -36,31 +36,11 @@ std::vector<Expected> read_expected(const std::string& csv) {
   return out;
 }
 
-std::vector<std::string> real_programs() {
-  std::vector<std::string> out;
-  for (const auto& e : std::filesystem::directory_iterator(testutil::data("real-gcode"))) {
-    const std::string name = e.path().filename().string();
-    if (name.find(".holes.csv") != std::string::npos) continue;
-    const std::string ext = e.path().extension().string();
-    if (ext == ".nc" || ext == ".ngc" || ext == ".tap" || (ext == ".txt" && name.find("drill") != std::string::npos)) {
-      out.push_back(e.path().string());
-    }
-  }
-  std::sort(out.begin(), out.end());
-  return out;
-}
-
 std::string holes_csv_of(const std::string& program) {
   return program.substr(0, program.find_last_of('.')) + ".holes.csv";
 }
 
 class RealProgram : public ::testing::TestWithParam<std::string> {};
-
-std::string param_name(const ::testing::TestParamInfo<std::string>& info) {
-  std::string n = std::filesystem::path(info.param).filename().string();
-  for (char& c : n) if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-  return n;
-}
 
 }  // namespace
 
@@ -80,7 +60,8 @@ TEST_P(RealProgram, reads_the_holes_rs274_drills_in_order_with_tool_and_depth) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(real_gcode, RealProgram, ::testing::ValuesIn(real_programs()), param_name);
+INSTANTIATE_TEST_SUITE_P(real_gcode, RealProgram, ::testing::ValuesIn(testutil::real_gcode_programs()),
+                         [](const auto& info) { return testutil::file_param_name(info.param); });
 
 namespace {
 std::vector<const gcode::ProgramHole*> all_holes(const gcode::DrillingProgram& p) {

@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -107,6 +108,31 @@ inline void move_lower_left_to_zero(aco::HoleSet& holes) {
     y0 = std::min(y0, h.center.y);
   }
   for (aco::Hole& h : holes) h.center = {h.center.x - x0, h.center.y - y0};
+}
+
+// The real drilling programs of tests/data/real-gcode (each beside its
+// NAME.holes.csv, what rs274 drills), sorted.
+inline std::vector<std::string> real_gcode_programs() {
+  std::vector<std::string> out;
+  for (const auto& e : std::filesystem::directory_iterator(data("real-gcode"))) {
+    const std::string name = e.path().filename().string();
+    const std::string ext = e.path().extension().string();
+    if (name.find(".holes.csv") != std::string::npos) continue;
+    if (ext == ".nc" || ext == ".ngc" || ext == ".tap" || (ext == ".txt" && name.find("drill") != std::string::npos)) {
+      out.push_back(e.path().string());
+    }
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+// A file's name as a test parameter's name: letters and digits only.
+inline std::string file_param_name(const std::string& path) {
+  std::string n = std::filesystem::path(path).filename().string();
+  for (char& c : n) {
+    if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+  }
+  return n;
 }
 
 inline int count_lines(const std::string& s) {

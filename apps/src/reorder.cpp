@@ -5,6 +5,8 @@
 #include <map>
 #include <numeric>
 
+#include "formats/holes.h"
+
 namespace app {
 
 namespace {
@@ -83,20 +85,14 @@ gcode::Tool estimate_tool(const gcode::ToolRun& run) {
 ReorderResult reorder_program(const gcode::DrillingProgram& input, const PlanOptions& options, const ReorderOptions& reorder) {
   ReorderResult r;
   r.program = input;
+  r.holes = formats::program_holes(input);
   std::uint32_t next_group = 1;
+  aco::HoleIndex next = 0;  // the runs' holes follow each other in r.holes
   for (const gcode::ToolRun& run : input.runs) {
     if (run.holes.empty()) continue;
     ToolGroup g;
     g.tool = estimate_tool(run);
-    for (const gcode::ProgramHole& h : run.holes) {
-      aco::Hole hole;
-      hole.center = h.at;
-      hole.diameter = run.diameter_mm.value_or(0.0);
-      hole.layer = "T" + std::to_string(run.tool);
-      hole.source_line = h.line;
-      g.input_order.push_back(static_cast<aco::HoleIndex>(r.holes.size()));
-      r.holes.push_back(std::move(hole));
-    }
+    for (std::size_t i = 0; i < run.holes.size(); ++i) g.input_order.push_back(next++);
     const double spacing = std::max(reorder.min_spacing_mm, run.diameter_mm.value_or(0.0));
     const std::vector<std::uint32_t> groups = overlap_groups(r.holes, g.input_order, spacing, next_group);
     for (std::size_t i = 0; i < groups.size(); ++i) {

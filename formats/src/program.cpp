@@ -7,6 +7,21 @@
 
 namespace formats {
 
+aco::HoleSet program_holes(const gcode::DrillingProgram& program) {
+  aco::HoleSet holes;
+  for (const gcode::ToolRun& run : program.runs) {
+    for (const gcode::ProgramHole& h : run.holes) {
+      aco::Hole hole;
+      hole.center = h.at;
+      hole.diameter = run.diameter_mm.value_or(0.0);
+      hole.layer = "T" + std::to_string(run.tool);
+      hole.source_line = h.line;
+      holes.push_back(std::move(hole));
+    }
+  }
+  return holes;
+}
+
 LoadedHoles parse_program(const std::string& path, std::string_view data) {
   LoadedHoles out;
   out.format = InputFormat::Program;
@@ -16,16 +31,7 @@ LoadedHoles parse_program(const std::string& path, std::string_view data) {
     throw InputError(path, e.line(), e.what());
   }
   out.metric = !out.program->inch;
-  for (const gcode::ToolRun& run : out.program->runs) {
-    for (const gcode::ProgramHole& h : run.holes) {
-      aco::Hole hole;
-      hole.center = h.at;
-      hole.diameter = run.diameter_mm.value_or(0.0);
-      hole.layer = "T" + std::to_string(run.tool);
-      hole.source_line = h.line;
-      out.holes.push_back(std::move(hole));
-    }
-  }
+  out.holes = program_holes(*out.program);
   return out;
 }
 

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <limits>
 
+#include "block_text.h"
 #include "gcode/drilling.h"
 
 namespace gcode {
@@ -326,7 +327,7 @@ class Reader {
     if (home) {
       // G28/G30: to home through an intermediate point; drilling programs use
       // them for Z. The spindle is then at machine Z home.
-      leave_xy_if(wx || wy);
+      if (wx || wy) close_hole();
       if (wz) z_.reset();
       stopped(stop);
       return;
@@ -386,10 +387,6 @@ class Reader {
     hole_ = OpenHole{};
   }
 
-  void leave_xy_if(bool leaving) {
-    if (leaving) close_hole();
-  }
-
   void rapid_to(aco::Point2 to) {
     const double d = aco::euclidean(xy_, to);
     if (d <= kTiny) return;
@@ -413,7 +410,6 @@ class Reader {
     if (wz) nz = absolute_ ? *wz : z_.value_or(0.0) + *wz;
     if (motion_ == Motion::Feed && d > kTiny) {
       if (options_.drilling_only) refuse("G1 moves in X/Y: a cutting move");
-      out_.feed_xy_mm += d;
       close_hole();
       xy_ = to;
       arrive_z_ = z_;
@@ -516,7 +512,6 @@ class Reader {
     ProgramHole h;
     h.at = xy_;
     h.cycle = cycle_;
-    h.cycle.moves.clear();
     h.arrive_z_mm = moved ? arrive : arrive_z_;
     h.line = lineno_;
     // A rapid to this very XY just before the cycle (FreeCAD: "G0 X Y" then "G83 X Y ...") belongs to the hole.
@@ -596,14 +591,7 @@ bool looks_like_gcode(std::string_view head) {
     if (nl == std::string_view::npos) nl = head.size();
     std::string_view raw = head.substr(pos, nl - pos);
     pos = nl + 1;
-    std::string code;
-    int depth = 0;
-    for (char ch : raw) {
-      if (ch == '(') ++depth;
-      else if (ch == ')') depth = std::max(0, depth - 1);
-      else if (ch == ';' && depth == 0) break;
-      else if (depth == 0) code += static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
-    }
+    const std::string code = code_of(raw);
     std::string_view line = trim(code);
     if (line.empty() || line.front() == '%') continue;
     if (line.back() == '*') return false;

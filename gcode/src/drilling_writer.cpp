@@ -9,6 +9,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "block_text.h"
 #include "gcode/drilling.h"
 
 namespace gcode {
@@ -16,17 +17,6 @@ namespace gcode {
 namespace {
 
 constexpr double kMmPerInch = 25.4;
-
-std::string plain_comment(std::string text) {
-  for (char& ch : text) {
-    if (ch == '(' || ch == ')') ch = '/';
-    else if (ch == '\n' || ch == '\r') ch = ' ';
-    else if (static_cast<unsigned char>(ch) >= 128) ch = '?';
-    else ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
-  }
-  if (text.size() > 100) text.resize(100);
-  return text;
-}
 
 std::string rpm_text(double rpm) {
   std::string s = format_number(rpm, 0);
@@ -82,10 +72,7 @@ class Writer {
 
   void line(const std::string& text) { out_ << text << '\n'; }
 
-  std::string z_home() const {
-    if (s_.dialect == Dialect::Fanuc) return "G91 G28 Z0.\nG90";
-    return "G53 G00 Z0.";
-  }
+  std::string z_home() const { return z_home_block(s_.dialect); }
 
   // The holes of one run, from wherever the spindle is (`z`: nullopt = not known).
   // `at_first`: the spindle is already over the first hole.
@@ -161,8 +148,8 @@ void write_dialect(std::ostream& out, const DrillingProgram& p, const DrillingWr
   w.line("%");
   char oline[16];
   std::snprintf(oline, sizeof oline, "O%05d", s.program_number);
-  w.line(std::string(oline) + " (" + plain_comment(s.program_name) + ")");
-  for (const std::string& text : s.header_comments) w.line("(" + plain_comment(text) + ")");
+  w.line(std::string(oline) + " (" + comment_text(s.program_name) + ")");
+  for (const std::string& text : s.header_comments) w.line("(" + comment_text(text) + ")");
   for (const ToolRun& run : p.runs) {
     if (run.tool <= 0) continue;
     std::string d = run.diameter_mm ? " D=" + w.n(*run.diameter_mm) + (s.inch ? " IN" : " MM") : "";
@@ -174,7 +161,7 @@ void write_dialect(std::ostream& out, const DrillingProgram& p, const DrillingWr
   for (const ToolRun& run : p.runs) {
     if (run.holes.empty()) continue;
     w.line("(" + (run.tool > 0 ? "T" + std::to_string(run.tool) + ", " : std::string("NO TOOL NUMBER, ")) +
-           std::to_string(run.holes.size()) + " HOLES" + (run.message.empty() ? "" : ": " + plain_comment(run.message)) + ")");
+           std::to_string(run.holes.size()) + " HOLES" + (run.message.empty() ? "" : ": " + comment_text(run.message)) + ")");
     if (run.tool > 0) w.line("T" + std::to_string(run.tool) + (run.tool_change ? " M06" : ""));
     if (run.pause) w.line("M00");
     const ProgramHole& first = run.holes.front();
@@ -197,18 +184,6 @@ void write_dialect(std::ostream& out, const DrillingProgram& p, const DrillingWr
   if (p.end) w.line("G00 X" + w.n(p.end->x) + " Y" + w.n(p.end->y));
   w.line("M30");
   w.line("%");
-}
-
-std::string code_of(std::string_view raw) {
-  std::string code;
-  int depth = 0;
-  for (char ch : raw) {
-    if (ch == '(') ++depth;
-    else if (ch == ')') depth = std::max(0, depth - 1);
-    else if (ch == ';' && depth == 0) break;
-    else if (depth == 0) code += static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
-  }
-  return code;
 }
 
 // Does the line only move, cycle or set cycle words (what a regenerated

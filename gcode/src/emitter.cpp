@@ -28,14 +28,7 @@ class Writer {
 
   void line(const std::string& text) { out_ << text << '\n'; }
 
-  std::string z_home() const {
-    switch (s_.dialect) {
-      case Dialect::Fanuc: return "G91 G28 Z0.\nG90";
-      case Dialect::Haas:
-      case Dialect::LinuxCnc: return "G53 G00 Z0.";
-    }
-    return "";
-  }
+  std::string z_home() const { return z_home_block(s_.dialect); }
 
   std::string dwell(double seconds) const {
     // HAAS and Fanuc read P without a decimal point as milliseconds; LinuxCNC
@@ -59,7 +52,9 @@ class Writer {
   const ProgramSettings& s_;
 };
 
-std::string upper_comment(std::string text) {
+}  // namespace
+
+std::string comment_text(std::string text) {
   // Comments in parentheses cannot nest; keep them short, uppercase and plain.
   for (char& ch : text) {
     if (ch == '(' || ch == ')') ch = '/';
@@ -71,7 +66,10 @@ std::string upper_comment(std::string text) {
   return text;
 }
 
-}  // namespace
+std::string z_home_block(Dialect d) {
+  if (d == Dialect::Fanuc) return "G91 G28 Z0.\nG90";  // HAAS and LinuxCNC: G53, non-modal machine Z
+  return "G53 G00 Z0.";
+}
 
 std::string tool_name(const Tool& t) {
   if (!t.name.empty()) return t.name;
@@ -139,12 +137,12 @@ void write_program(std::ostream& out, const std::vector<ToolPass>& passes, const
   w.line("%");
   char oline[16];
   std::snprintf(oline, sizeof oline, "O%05d", s.program_number);
-  w.line(std::string(oline) + " (" + upper_comment(s.program_name) + ")");
-  for (const std::string& text : s.header_comments) w.line("(" + upper_comment(text) + ")");
+  w.line(std::string(oline) + " (" + comment_text(s.program_name) + ")");
+  for (const std::string& text : s.header_comments) w.line("(" + comment_text(text) + ")");
   if (s.resume_from > 1) w.line("(RESUMED AT HOLE " + std::to_string(s.resume_from) + ")");
   for (const ToolPass& p : passes) {
     w.line("(T" + std::to_string(p.tool.number) + " D=" + w.c(p.tool.diameter_mm) + " " +
-           (s.units == Units::Inch ? "IN" : "MM") + " - " + upper_comment(tool_name(p.tool)) + " - " +
+           (s.units == Units::Inch ? "IN" : "MM") + " - " + comment_text(tool_name(p.tool)) + " - " +
            std::to_string(p.holes.size()) + " HOLES)");
   }
   w.line("G00 G17 G40 G49 G80 G90");
@@ -158,9 +156,9 @@ void write_program(std::ostream& out, const std::vector<ToolPass>& passes, const
     if (first == p.holes.size()) continue;
     const Tool& t = p.tool;
     const std::size_t count = p.holes.size() - first;
-    w.line("(T" + std::to_string(t.number) + " " + upper_comment(tool_name(t)) + ", " + std::to_string(count) +
+    w.line("(T" + std::to_string(t.number) + " " + comment_text(tool_name(t)) + ", " + std::to_string(count) +
            " HOLES)");
-    w.line("T" + std::to_string(t.number) + " M06 (" + upper_comment(tool_name(t)) + ")");
+    w.line("T" + std::to_string(t.number) + " M06 (" + comment_text(tool_name(t)) + ")");
     const aco::Point2& h0 = p.holes[first];
     w.line("G00 G90 G54 X" + w.c(h0.x) + " Y" + w.c(h0.y) + " S" + std::to_string(t.spindle_rpm) + " M03");
     char hbuf[16];

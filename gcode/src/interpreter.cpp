@@ -15,7 +15,6 @@ Interpretation interpret(std::string_view program) {
     for (const ProgramHole& h : run.holes) out.holes.push_back({run.tool, h.at.x, h.at.y, h.cycle.bottom_mm(), h.line});
   }
   out.rapid_xy_mm = p.rapid_xy_mm;
-  out.feed_xy_mm = p.feed_xy_mm;
   out.tool_diameter_mm = p.tool_diameter_mm;
   out.inch = p.inch;
   out.tool_changes = p.tool_changes;

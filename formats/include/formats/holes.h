@@ -93,6 +93,11 @@ std::vector<aco::Point2> slot_holes(const Slot& slot, double pitch_mm);
 // `max_holes` holes in all is an InputError naming `path` and the slot's line.
 void apply_slot_policy(LoadedHoles& loaded, const SlotOptions& options, const std::string& path, std::size_t max_holes);
 
+// A drilling program's holes in program order, one per hole drilled (one
+// drilled twice is there twice): layer "T<n>", the diameter the program's
+// comments give its tool, else 0, and the line that drills it.
+aco::HoleSet program_holes(const gcode::DrillingProgram& program);
+
 InputFormat detect_format(const std::string& path, std::string_view data);
 
 // Chooses the reader by content, reads, applies the layer and diameter

@@ -86,7 +86,6 @@ struct DrillingProgram {
   std::optional<aco::Point2> end;
   bool uses_line_numbers = false;
   double rapid_xy_mm = 0.0;              // XY length of rapid moves, from X0 Y0
-  double feed_xy_mm = 0.0;               // XY length of feed moves (lenient reading only)
   std::size_t tool_changes = 0;
   std::size_t hole_count() const;
 };
@@ -94,7 +93,7 @@ struct DrillingProgram {
 struct ReadOptions {
   // Refuse what is not drilling — G1 moves in XY, arcs, probing, subprogram
   // calls, other axes, another plane — naming the line (ProgramError). Off,
-  // they are read past and their XY length counted (verify).
+  // they are read past (verify lists what a program drills, whatever else it does).
   bool drilling_only = true;
 };
 

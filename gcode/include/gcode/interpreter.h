@@ -1,9 +1,9 @@
 #pragma once
 /**
- * A reader of drilling programs: the subset acodrill writes and what typical
- * posts emit (G0/G1, G81/G82/G83/G73/G80, G98/G99, G90/G91, G20/G21, G53,
- * G28, modal X Y Z R F, T/M06, N-numbers, comments). It lists every hole
- * drilled, with its tool, and the rapid XY travel. Used by `acodrill verify`.
+ * What `acodrill verify` needs of a program: every hole it drills (canned or
+ * expanded), with its tool and depth, and the rapid XY travel. A flat view of
+ * gcode::read_drilling (drilling.h) read leniently: moves that are not
+ * drilling are read past, not refused.
  */
 #include <cstdint>
 #include <map>
@@ -33,7 +33,6 @@ struct DrilledHole {
 struct Interpretation {
   std::vector<DrilledHole> holes;
   double rapid_xy_mm = 0.0;   // XY length of rapid moves, including moves between cycle holes
-  double feed_xy_mm = 0.0;    // XY length of G1 moves (not expected in a drilling program)
   std::map<int, double> tool_diameter_mm;  // from "(T1 D=..." comments, where present
   bool inch = false;
   std::size_t tool_changes = 0;

@@ -66,6 +66,14 @@ std::optional<Cycle> cycle_from_string(const std::string& name);
 // The tool's name, or "6.350 MM DRILL" made from its diameter.
 std::string tool_name(const Tool& tool);
 
+// Text made safe for a "(...)" comment: parentheses become '/', one line,
+// uppercase ASCII, at most 100 characters.
+std::string comment_text(std::string text);
+
+// The block that takes Z to machine home: "G53 G00 Z0." (HAAS, LinuxCNC) or
+// "G91 G28 Z0." and "G90" (Fanuc).
+std::string z_home_block(Dialect d);
+
 // Locale-independent fixed-point text: always a decimal point, never "-0.000".
 std::string format_number(double value, int decimals);
 
