@@ -160,7 +160,6 @@ TEST(program_test, a_reordered_program_reads_back_to_the_same_holes_in_both_styl
   for (bool keep : {false, true}) {
     gcode::DrillingWriteSettings s;
     s.keep_style = keep;
-    s.source = text;
     std::ostringstream out;
     gcode::write_drilling(out, p, s);
     const gcode::DrillingProgram reread = gcode::read_drilling(out.str());
@@ -224,4 +223,15 @@ TEST(program_test, overlapping_holes_keep_their_input_order_and_verify_confirms_
   v = testutil::acodrill_run("verify " + (t / "bad.ngc") + " --holes " + in + " -q");
   EXPECT_EQ(v.code, 1);
   EXPECT_THAT(v.out, ::testing::HasSubstr("to Z-1.575"));
+}
+
+// A program piped in is read once: keep-style copies the text the reader read.
+TEST(program_test, a_program_from_standard_input_is_reordered_in_its_own_style) {
+  testutil::TempDir t;
+  const std::string text = testutil::slurp(testutil::data("real-gcode/fusion360_mach3_heatsunk_drill.tap"));
+  auto r = testutil::acodrill_run("plan - -o " + (t / "out.tap") + " -q --keep-style", text);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::string out = testutil::slurp(t / "out.tap");
+  EXPECT_THAT(out, ::testing::HasSubstr("(HEATSUNK_DRILL)\n"));
+  EXPECT_EQ(gcode::read_drilling(out).hole_count(), gcode::read_drilling(text).hole_count());
 }

@@ -313,8 +313,8 @@ int plan_program(const PlanArgs& a, app::PlanOptions o, const app::LoadedHoles& 
   }
   app::ReorderOptions ro;
   ro.min_spacing_mm = a.min_spacing;
+  app::check_travel(loaded.holes, o.machine, source);  // before the colony's work, not after
   app::ReorderResult r = app::reorder_program(input, o, ro);
-  app::check_travel(r.holes, o.machine, source);
 
   const std::string source_name = source.substr(source.find_last_of('/') == std::string::npos ? 0 : source.find_last_of('/') + 1);
   gcode::DrillingWriteSettings ws;
@@ -324,8 +324,6 @@ int plan_program(const PlanArgs& a, app::PlanOptions o, const app::LoadedHoles& 
   ws.program_number = a.program_number;
   ws.program_name = loaded.name;
   ws.keep_style = a.keep_style;
-  const std::string text = app::read_file(a.input);
-  ws.source = text;
   ws.header_comments = {
       "SOURCE: " + source_name + " (A DRILLING PROGRAM, REORDERED)",
       std::to_string(r.holes.size()) + " HOLES IN " + std::to_string(r.plan.groups.size()) + " TOOL RUNS",

@@ -574,6 +574,7 @@ std::size_t DrillingProgram::hole_count() const {
 DrillingProgram read_drilling(std::string_view text, const ReadOptions& options) {
   Reader reader(options);
   DrillingProgram p = reader.run(text);
+  p.text = std::string(text);
   for (ToolRun& run : p.runs) {
     auto d = p.tool_diameter_mm.find(run.tool);
     if (d != p.tool_diameter_mm.end()) run.diameter_mm = d->second;

@@ -61,9 +61,9 @@ Travel travel_of(const ToolRun& run) {
 
 class Writer {
  public:
-  Writer(std::ostream& out, const DrillingWriteSettings& s) : out_(out), s_(s) {
-    two_digit_ = !s.keep_style || s.source.find("G00") != std::string_view::npos ||
-                 s.source.find("G01") != std::string_view::npos;
+  Writer(std::ostream& out, const DrillingWriteSettings& s, std::string_view input)
+      : out_(out), s_(s) {
+    two_digit_ = !s.keep_style || input.find("G00") != std::string_view::npos || input.find("G01") != std::string_view::npos;
   }
 
   std::string n(double mm) const { return format_number(s_.inch ? mm / kMmPerInch : mm, s_.decimals); }
@@ -144,7 +144,7 @@ class Writer {
 };
 
 void write_dialect(std::ostream& out, const DrillingProgram& p, const DrillingWriteSettings& s) {
-  Writer w(out, s);
+  Writer w(out, s, p.text);
   w.line("%");
   char oline[16];
   std::snprintf(oline, sizeof oline, "O%05d", s.program_number);
@@ -220,10 +220,11 @@ bool moves_without_motion_word(std::string_view raw) {
 
 void write_keep_style(std::ostream& out, const DrillingProgram& p, const DrillingWriteSettings& s) {
   std::vector<std::string_view> lines;
-  for (std::size_t pos = 0; pos <= s.source.size();) {
-    std::size_t nl = s.source.find('\n', pos);
-    if (nl == std::string_view::npos) nl = s.source.size();
-    std::string_view l = s.source.substr(pos, nl - pos);
+  const std::string_view source = p.text;
+  for (std::size_t pos = 0; pos <= source.size();) {
+    std::size_t nl = source.find('\n', pos);
+    if (nl == std::string_view::npos) nl = source.size();
+    std::string_view l = source.substr(pos, nl - pos);
     if (!l.empty() && l.back() == '\r') l.remove_suffix(1);
     lines.push_back(l);
     pos = nl + 1;
@@ -246,7 +247,7 @@ void write_keep_style(std::ostream& out, const DrillingProgram& p, const Drillin
     spans.push_back(sp);
   }
   std::ostringstream body;
-  Writer w(body, s);
+  Writer w(body, s, p.text);
   std::size_t next = 0;
   for (std::uint32_t no = 1; no <= lines.size(); ++no) {
     if (next < spans.size() && no == spans[next].first) {

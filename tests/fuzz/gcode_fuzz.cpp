@@ -21,7 +21,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       s.inch = p.inch;
       s.decimals = p.decimals;
       s.keep_style = keep;
-      s.source = text;
       std::ostringstream out;
       gcode::write_drilling(out, p, s);
       const gcode::DrillingProgram back = gcode::read_drilling(out.str());

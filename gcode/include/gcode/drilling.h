@@ -85,6 +85,7 @@ struct DrillingProgram {
   // Where the spindle went in XY after the last hole, when it moved on (a park position).
   std::optional<aco::Point2> end;
   bool uses_line_numbers = false;
+  std::string text;                      // the program as read: what keep-style copies
   double rapid_xy_mm = 0.0;              // XY length of rapid moves, from X0 Y0
   std::size_t tool_changes = 0;
   std::size_t hole_count() const;
@@ -107,11 +108,10 @@ struct DrillingWriteSettings {
   int program_number = 1001;
   std::string program_name = "ACODRILL";
   std::vector<std::string> header_comments;
-  // Keep the input's own style: every line of `source` outside the stretches
-  // where a run drills is copied as it is; each stretch is written anew, in
-  // the new order, canned holes canned and expanded ones expanded.
+  // Keep the input's own style: every line of the program's text outside the
+  // stretches where a run drills is copied as it is; each stretch is written
+  // anew, in the new order, canned holes canned and expanded ones expanded.
   bool keep_style = false;
-  std::string_view source;
 };
 
 // Writes `program` (the input's runs, each with its holes reordered): the
