@@ -30,6 +30,7 @@
 #include "parallel.h"
 #include "rng.h"
 #include "space.h"
+#include "trail.h"
 
 namespace aco {
 
@@ -57,6 +58,8 @@ constexpr double kDeviate = 0.2;
 // After this many iterations in which no ant improved the reference, the best
 // route is kicked by a double bridge within kKickSpan consecutive holes.
 constexpr int kKickAfter = 30;
+// ACS's local update: tau = (1 - xi) tau + xi tau0 on every edge an ant used.
+constexpr double kWear = 0.1;
 constexpr std::size_t kKickSpan = 50;
 
 class Clock {
@@ -69,17 +72,17 @@ class Clock {
   std::chrono::steady_clock::time_point t0_ = std::chrono::steady_clock::now();
 };
 
-// One ant's working state. Aligned to a cache line: the vector headers here
-// are written at every step, and two ants on two threads sharing a line would
-// trade it back and forth (measured on pcb1173: 1.61x on 2 threads before,
-// see the commit).
+// A worker's scratch for building and improving one ant's route. One per
+// worker, not per ant: an ant is taken by whichever worker is free, and its
+// scratch would move from one core's cache to the other's every iteration
+// (measured on pcb1173, see the commit). Aligned to a cache line: the vector
+// headers are written at every step.
 struct alignas(64) AntWork {
   std::vector<HoleIndex> route;       // array route, V at 0 for an open path
   std::vector<HoleIndex> unvisited;   // swap-remove list
   std::vector<HoleIndex> where;       // index of each hole in `unvisited`
   std::vector<double> weight;         // roulette weights over candidates
   std::unique_ptr<detail::BucketGrid> grid;  // candidate-list mode: nearest unvisited hole
-  double length = 0.0;
   // Focused construction: visited marks by stamp (no O(n) clear per ant), the
   // next unvisited position of the reference route (union-find with path
   // halving), and the ends of the edges the ant made new.
@@ -87,6 +90,25 @@ struct alignas(64) AntWork {
   std::uint32_t stamp = 0;
   std::vector<std::uint32_t> skip;
   std::vector<HoleIndex> seeds;
+  // Focused colony: the shortest route this worker built this round, so only
+  // it, not every ant's, goes to the thread that updates the pheromone.
+  std::vector<HoleIndex> best_route;
+  double best_length = 0.0;
+  int best_ant = -1;
+  // The trail slots this worker's ants wore this round, ant after ant (kept
+  // here, not with the ant, so the writes stay in this worker's cache).
+  std::vector<std::size_t> worn;
+};
+
+// What an ant leaves for the pheromone update: its length, the trail slots of
+// the edges ACS's local update wears (found by the ant, in parallel, so the
+// serial part only writes them), and, for the colonies whose every ant
+// deposits, its route (swapped with the worker's buffer, not copied).
+struct alignas(64) AntRoute {
+  std::vector<HoleIndex> route;
+  int worker = 0;                      // whose `worn` list holds this ant's slots,
+  std::size_t worn_from = 0, worn_to = 0;  // and where
+  double length = 0.0;
 };
 
 class Colony {
@@ -96,9 +118,11 @@ class Colony {
     const int k = n_ <= kFullListLimit ? static_cast<int>(n_) - 1 : p_.candidates;
     cand_ = detail::build_candidates(space_, k);
     k_ = cand_.k;
-    tau_.assign(static_cast<std::size_t>(n_) * k_, 0.0);
-    choice_.assign(tau_.size(), 0.0);
-    eta_beta_.assign(tau_.size(), 0.0);
+    const std::size_t slots = static_cast<std::size_t>(n_) * k_;
+    tau_ = detail::Trail(slots, 0.0, p_.rho);
+    // Focused ants weigh their few rows as they go and never read choice_.
+    if (p_.algorithm != Algorithm::FocusedAcs) choice_.assign(slots, 0.0);
+    eta_beta_.assign(slots, 0.0);
     for (HoleIndex i = 0; i < n_; ++i) {
       const HoleIndex* c = cand_.of(i);
       for (int r = 0; r < k_; ++r) eta_beta_[idx(i, r)] = std::pow(eta(space_.d(i, c[r])), p_.beta);
@@ -132,14 +156,15 @@ class Colony {
     return -1;
   }
   void set_all_tau(double v) {
-    std::fill(tau_.begin(), tau_.end(), v);
+    tau_.update_all([v](double) { return v; });
   }
   void refresh_choice() {
     const double a = p_.alpha;
+    const detail::Trail& tau = tau_;
     if (a == 1.0) {  // the common case: skip n*k calls to pow
-      for (std::size_t e = 0; e < tau_.size(); ++e) choice_[e] = tau_[e] * eta_beta_[e];
+      for (std::size_t e = 0; e < choice_.size(); ++e) choice_[e] = tau[e] * eta_beta_[e];
     } else {
-      for (std::size_t e = 0; e < tau_.size(); ++e) choice_[e] = std::pow(tau_[e], a) * eta_beta_[e];
+      for (std::size_t e = 0; e < choice_.size(); ++e) choice_[e] = std::pow(tau[e], a) * eta_beta_[e];
     }
     if (!dense_choice_.empty()) {
       for (HoleIndex i = 0; i < n_; ++i) {
@@ -150,15 +175,35 @@ class Colony {
     }
   }
   void construct(AntWork& w, Rng& rng, bool acs);
-  void construct_focused(AntWork& w, Rng& rng) const;
+  void construct_focused(AntWork& w, Rng& rng, int bound) const;
   HoleIndex choose_focused(HoleIndex cur, const AntWork& w, Rng& rng, HoleIndex exclude) const;
   void set_reference(const std::vector<HoleIndex>& route);
   HoleIndex choose_next(HoleIndex cur, AntWork& w, Rng& rng, bool acs);
   HoleIndex nearest_unvisited(HoleIndex cur, const AntWork& w) const;
   void deposit(const std::vector<HoleIndex>& route, double amount);
   void deposit_edge(HoleIndex a, HoleIndex b, double amount);
+  // Appends the trail slots of edge (a, b), both ways, that are candidate edges.
+  void add_slots(HoleIndex a, HoleIndex b, std::vector<std::size_t>& slots) const {
+    if (a >= n_ || b >= n_) return;  // V's edges carry no pheromone
+    int r = rank_of(a, b);
+    if (r >= 0) slots.push_back(idx(a, r));
+    r = rank_of(b, a);
+    if (r >= 0) slots.push_back(idx(b, r));
+  }
+  // ACS's local update: an edge an ant used loses some trail, toward tau0.
+  double wear(double t) const { return (1.0 - kWear) * t + kWear * tau0_; }
+  // The slots of edge (a, b) that wearing changes. Wearing is one map applied
+  // once per use, so a slot it leaves unchanged (most sit at tau0) stays
+  // unchanged however many ants use it, and the serial update skips it.
+  void add_worn_slots(HoleIndex a, HoleIndex b, std::vector<std::size_t>& slots) const {
+    const std::size_t first = slots.size();
+    add_slots(a, b, slots);
+    slots.erase(std::remove_if(slots.begin() + static_cast<std::ptrdiff_t>(first), slots.end(),
+                               [this](std::size_t e) { return wear(tau_[e]) == tau_[e]; }),
+                slots.end());
+  }
   void evaporate(double factor) {
-    for (double& t : tau_) t *= factor;
+    tau_.update_all([factor](double t) { return t * factor; });
   }
   Order to_order(const std::vector<HoleIndex>& route) const;
 
@@ -168,7 +213,8 @@ class Colony {
   HoleIndex n_;
   Candidates cand_;
   int k_ = 0;
-  std::vector<double> tau_, choice_, eta_beta_;
+  detail::Trail tau_;
+  std::vector<double> choice_, eta_beta_;
   std::vector<int> rank_;  // full-list mode: rank of j in i's list
   // Full-list mode: choice by (i, j), so an ant scans only its unvisited holes
   // (n²/2 per tour instead of n²; measured 2x on the thesis's 70-hole runs).
@@ -185,9 +231,40 @@ class Colony {
 };
 
 void Colony::set_reference(const std::vector<HoleIndex>& route) {
-  ref_route_ = route;
-  ref_pos_.resize(route.size());
-  for (std::size_t i = 0; i < route.size(); ++i) ref_pos_[route[i]] = static_cast<std::uint32_t>(i);
+  const std::size_t m = route.size();
+  if (ref_route_.size() != m) {
+    ref_route_ = route;
+    ref_pos_.resize(m);
+    for (std::size_t i = 0; i < m; ++i) ref_pos_[route[i]] = static_cast<std::uint32_t>(i);
+    return;
+  }
+  // The new reference is mostly the old one: read it from the old one's first
+  // node, in the old one's direction, and write only the positions that
+  // changed. The lines left alone stay in the cache of the core whose ants
+  // read them (an open path has V first and one direction already).
+  std::size_t from = 0;
+  bool backward = false;
+  if (!space_.open()) {
+    from = static_cast<std::size_t>(std::find(route.begin(), route.end(), ref_route_[0]) - route.begin());
+    // Which way the old route runs: look where some node's old successor is.
+    // (Rarely past the first probe: an ant changes a short stretch.)
+    for (const std::size_t probe : {std::size_t{0}, m / 2, m / 4, 3 * m / 4}) {
+      const HoleIndex x = ref_route_[probe], next = ref_route_[(probe + 1) % m];
+      const std::size_t px = probe == 0 ? from : static_cast<std::size_t>(std::find(route.begin(), route.end(), x) - route.begin());
+      if (route[(px + 1) % m] == next) break;
+      if (route[(px + m - 1) % m] == next) {
+        backward = true;
+        break;
+      }
+    }
+  }
+  for (std::size_t i = 0; i < m; ++i) {
+    const HoleIndex h = route[backward ? (from + m - i) % m : (from + i) % m];
+    if (ref_route_[i] != h) {
+      ref_route_[i] = h;
+      ref_pos_[h] = static_cast<std::uint32_t>(i);
+    }
+  }
 }
 
 HoleIndex Colony::choose_focused(HoleIndex cur, const AntWork& w, Rng& rng, HoleIndex exclude) const {
@@ -195,7 +272,8 @@ HoleIndex Colony::choose_focused(HoleIndex cur, const AntWork& w, Rng& rng, Hole
   // tau^alpha * eta^beta computed here: a focused ant looks at few rows, so
   // refreshing all n*k of them every iteration would cost more than it saves.
   const HoleIndex* c = cand_.of(cur);
-  const double* tau = tau_.data() + idx(cur, 0);
+  const std::size_t row = idx(cur, 0);
+  const detail::Trail& tau = tau_;
   const double* eb = eta_beta_.data() + idx(cur, 0);
   double weight[64];
   const int k = std::min(k_, 64);
@@ -203,7 +281,8 @@ HoleIndex Colony::choose_focused(HoleIndex cur, const AntWork& w, Rng& rng, Hole
   int best_r = -1;
   for (int r = 0; r < k; ++r) {
     const bool free = w.mark[c[r]] != w.stamp && c[r] != exclude;
-    const double v = free ? (p_.alpha == 1.0 ? tau[r] : std::pow(tau[r], p_.alpha)) * eb[r] : 0.0;
+    const double t = free ? tau[row + r] : 0.0;
+    const double v = free ? (p_.alpha == 1.0 ? t : std::pow(t, p_.alpha)) * eb[r] : 0.0;
     weight[r] = v;
     total += v;
     if (free && (best_r < 0 || v > weight[best_r])) best_r = r;
@@ -218,7 +297,7 @@ HoleIndex Colony::choose_focused(HoleIndex cur, const AntWork& w, Rng& rng, Hole
   return c[best_r];
 }
 
-void Colony::construct_focused(AntWork& w, Rng& rng) const {
+void Colony::construct_focused(AntWork& w, Rng& rng, int bound) const {
   // Walk from a random node of the reference route R. While the ant has made
   // fewer than focus_edges new edges it chooses by the ACS rule; after that it
   // copies R, skipping what it has visited. Every edge that is not R's is new,
@@ -254,10 +333,6 @@ void Colony::construct_focused(AntWork& w, Rng& rng) const {
   const HoleIndex first = cur;
   visit(cur);
   int changes = 0;
-  // Each ant draws its bound from focus_edges x {1/2, 1, 2, 4}: small changes
-  // polish, large ones reach out of deep local optima; no single bound served
-  // every instance (measured: 8 stalls d1291, 32 stalls pcb1173).
-  const int bound = std::max(1, (p_.focus_edges << rng.below(4)) / 2);
   const std::uint32_t last_pos = static_cast<std::uint32_t>(m - 1);
   for (std::size_t step = 1; step < m; ++step) {
     const std::uint32_t pc = ref_pos_[cur];
@@ -405,9 +480,10 @@ void Colony::construct(AntWork& w, Rng& rng, bool acs) {
 void Colony::deposit_edge(HoleIndex a, HoleIndex b, double amount) {
   if (a >= n_ || b >= n_) return;  // V's edges carry no pheromone
   int r = rank_of(a, b);
-  if (r >= 0) tau_[idx(a, r)] += amount;
+  const auto add = [amount](double t) { return t + amount; };
+  if (r >= 0) tau_.update(idx(a, r), add);
   r = rank_of(b, a);
-  if (r >= 0) tau_[idx(b, r)] += amount;
+  if (r >= 0) tau_.update(idx(b, r), add);
 }
 
 void Colony::deposit(const std::vector<HoleIndex>& route, double amount) {
@@ -483,49 +559,98 @@ Solution Colony::run() {
   ref_len_ = best_len;
 
   const bool acs = p_.algorithm == Algorithm::AntColonySystem;
-  std::vector<AntWork> work(static_cast<std::size_t>(p_.ants));
+  std::vector<AntRoute> work(static_cast<std::size_t>(p_.ants));
+  std::vector<AntWork> workers(static_cast<std::size_t>(p_.threads));
   std::vector<LocalSearcher> searchers;
   if (use_ls) {
-    searchers.reserve(static_cast<std::size_t>(p_.ants));
-    for (int k = 0; k < p_.ants; ++k) searchers.emplace_back(space_, cand_);
+    searchers.reserve(static_cast<std::size_t>(p_.threads));
+    for (int t = 0; t < p_.threads; ++t) searchers.emplace_back(space_, cand_);
   }
 
+  double reinforced_for = -1.0;  // the best length whose route's edges the trail reinforces
   int since_improvement = 0;
   int since_restart = 0;
   std::vector<HoleIndex> restart_best = best_route;
   double restart_best_len = best_len;
   sol.stop_reason = "iterations";
-  int it = 0;
-  for (it = 1; it <= p_.iterations; ++it) {
-    detail::parallel_slots(p_.ants, p_.threads, sol.thread_busy_s, [&](int k) {
+  int it = 1;  // the iteration under way
+  // Focused ants draw how many edges they may change, first thing; they are
+  // handed out largest first, so a round ends on short ones and the workers
+  // finish it together.
+  std::vector<int> ant_of_slot(static_cast<std::size_t>(p_.ants));
+  std::vector<int> scale_of_ant(static_cast<std::size_t>(p_.ants));
+  auto order_ants = [&] {
+    std::iota(ant_of_slot.begin(), ant_of_slot.end(), 0);
+    if (!focused) return;
+    for (int k = 0; k < p_.ants; ++k) {
       Rng rng(p_.seed, static_cast<std::uint64_t>(it), static_cast<std::uint64_t>(k));
-      AntWork& w = work[static_cast<std::size_t>(k)];
-      if (focused) {
-        construct_focused(w, rng);
-        if (use_ls) searchers[static_cast<std::size_t>(k)].improve_from(w.route, or_opt, w.seeds);
-      } else {
-        construct(w, rng, acs);
-        if (use_ls) searchers[static_cast<std::size_t>(k)].improve(w.route, or_opt);
-      }
-      w.length = space_.route_cost(w.route);
-    });
+      scale_of_ant[static_cast<std::size_t>(k)] = static_cast<int>(rng.below(4));
+    }
+    std::stable_sort(ant_of_slot.begin(), ant_of_slot.end(),
+                     [&](int a, int b) { return scale_of_ant[static_cast<std::size_t>(a)] > scale_of_ant[static_cast<std::size_t>(b)]; });
+  };
+  auto ant = [&](int slot, int worker) {
+    const int k = ant_of_slot[static_cast<std::size_t>(slot)];
+    Rng rng(p_.seed, static_cast<std::uint64_t>(it), static_cast<std::uint64_t>(k));
+    AntWork& w = workers[static_cast<std::size_t>(worker)];
+    if (focused) {
+      // Each ant draws its bound from focus_edges x {1/2, 1, 2, 4}: small
+      // changes polish, large ones reach out of deep local optima, and no
+      // single bound served every instance (measured: 8 stalls d1291, 32
+      // stalls pcb1173). A fixed share of each bound per iteration, largest
+      // to the first ants, measured worse (d1291 at 5 s: 0.74 % against 0.30 %).
+      const int scale = static_cast<int>(rng.below(4));  // as order_ants drew it
+      construct_focused(w, rng, std::max(1, (p_.focus_edges << scale) / 2));
+      if (use_ls) searchers[static_cast<std::size_t>(worker)].improve_from(w.route, or_opt, w.seeds);
+    } else {
+      construct(w, rng, acs);
+      if (use_ls) searchers[static_cast<std::size_t>(worker)].improve(w.route, or_opt);
+    }
+    AntRoute& out = work[static_cast<std::size_t>(k)];
+    out.length = space_.route_cost(w.route);
+    out.worker = worker;
+    out.worn_from = w.worn.size();
+    if (p_.algorithm == Algorithm::AntColonySystem) {
+      const std::size_t mm = w.route.size();
+      for (std::size_t i = 0; i < mm; ++i) add_worn_slots(w.route[i], w.route[(i + 1) % mm], w.worn);
+    } else if (focused) {
+      // A focused ant's route is the reference but for its new edges, so only
+      // those are worn (the reference's edges get the global update).
+      for (std::size_t i = 0; i + 1 < w.seeds.size(); i += 2) add_worn_slots(w.seeds[i], w.seeds[i + 1], w.worn);
+    }
+    out.worn_to = w.worn.size();
+    if (!focused) {
+      std::swap(out.route, w.route);
+    } else if (w.best_ant < 0 || out.length < w.best_length || (out.length == w.best_length && k < w.best_ant)) {
+      std::swap(w.best_route, w.route);
+      w.best_length = out.length;
+      w.best_ant = k;
+    }
+  };
+  // After the barrier, on one thread: says whether to run another iteration.
+  auto update = [&]() -> bool {
     // Deterministic reduction: shortest, ties to the lowest ant index.
     int ib = 0;
     for (int k = 1; k < p_.ants; ++k) {
       if (work[k].length < work[ib].length) ib = k;
     }
     const double ib_len = work[ib].length;
+    const std::vector<HoleIndex>* ib_route = &work[ib].route;
+    for (AntWork& w : workers) {
+      if (w.best_ant == ib) ib_route = &w.best_route;
+      w.best_ant = -1;
+    }
     ++since_improvement;
     ++since_restart;
     if (focused) {
       ++ref_stall_;
       const bool better = ib_len < ref_len_ - 1e-9;
       const bool walk = ref_stall_ >= kKickAfter;
-      if (better || (ib_len <= ref_len_ + 1e-9 && work[ib].route != ref_route_)) {
+      if (better || (ib_len <= ref_len_ + 1e-9 && *ib_route != ref_route_)) {
         // The reference moves to the iteration's best when it is better or as
         // good (across a plateau).
         ref_len_ = ib_len;
-        set_reference(work[ib].route);
+        set_reference(*ib_route);
         if (better) ref_stall_ = 0;
       } else if (walk && kick_searcher_) {
         // Stuck: every ant's changes were repaired back to the reference. Kick
@@ -562,13 +687,13 @@ Solution Colony::run() {
     }
     if (ib_len < best_len - 1e-9) {
       best_len = ib_len;
-      best_route = work[ib].route;
+      best_route = *ib_route;
       since_improvement = 0;
       sol.trace.push_back({it, clock.seconds(), best_len});
     }
     if (ib_len < restart_best_len - 1e-9) {
       restart_best_len = ib_len;
-      restart_best = work[ib].route;
+      restart_best = *ib_route;
       since_restart = 0;
     }
 
@@ -576,7 +701,7 @@ Solution Colony::run() {
     switch (p_.algorithm) {
       case Algorithm::AntSystem:
         evaporate(1.0 - rho);
-        for (const AntWork& w : work) deposit(w.route, 1.0 / std::max(w.length, 1e-9));
+        for (const AntRoute& w : work) deposit(w.route, 1.0 / std::max(w.length, 1e-9));
         break;
       case Algorithm::MaxMinAntSystem: {
         evaporate(1.0 - rho);
@@ -584,11 +709,11 @@ Solution Colony::run() {
         // since the last restart deposits ever more often as the run goes on.
         const int u_gb = since_restart < 25 ? 25 : since_restart < 75 ? 5 : since_restart < 125 ? 3 : since_restart < 250 ? 2 : 1;
         const bool use_gb = (it % u_gb) == 0;
-        const auto& route = use_gb ? restart_best : work[ib].route;
+        const auto& route = use_gb ? restart_best : *ib_route;
         const double len = use_gb ? restart_best_len : ib_len;
         mmas_limits(best_len);
         deposit(route, 1.0 / std::max(len, 1e-9));
-        for (double& t : tau_) t = std::clamp(t, tau_min, tau_max);
+        tau_.update_all([&](double t) { return std::clamp(t, tau_min, tau_max); });
         // Stagnation: reinitialise the trails (the best-so-far is kept).
         if (since_restart >= std::max(50, p_.stall_iterations / 2)) {
           set_all_tau(tau_max);
@@ -600,58 +725,45 @@ Solution Colony::run() {
       case Algorithm::AntColonySystem:
       case Algorithm::FocusedAcs: {
         // Local update, deferred to the barrier and applied in ant order so the
-        // result does not depend on thread timing: tau = (1-xi) tau + xi tau0.
-        // A focused ant's route is the reference but for its new edges, so only
-        // those are updated (the reference's edges get the global update).
-        constexpr double xi = 0.1;
-        for (const AntWork& w : work) {
-          if (!focused) break;
-          for (std::size_t i = 0; i + 1 < w.seeds.size(); i += 2) {
-            if (w.seeds[i] >= n_ || w.seeds[i + 1] >= n_) continue;  // V's edges carry no pheromone
-            for (auto [x, y] : {std::pair{w.seeds[i], w.seeds[i + 1]}, std::pair{w.seeds[i + 1], w.seeds[i]}}) {
-              const int r = rank_of(x, y);
-              if (r >= 0) tau_[idx(x, r)] = (1.0 - xi) * tau_[idx(x, r)] + xi * tau0_;
-            }
-          }
+        // result does not depend on thread timing.
+        for (const AntRoute& w : work) {
+          const std::vector<std::size_t>& worn = workers[static_cast<std::size_t>(w.worker)].worn;
+          for (std::size_t i = w.worn_from; i < w.worn_to; ++i) tau_.update(worn[i], [this](double t) { return wear(t); });
         }
-        for (const AntWork& w : work) {
-          if (focused) break;
-          const std::size_t mm = w.route.size();
-          for (std::size_t i = 0; i < mm; ++i) {
-            const HoleIndex a = w.route[i], b = w.route[(i + 1) % mm];
-            if (a >= n_ || b >= n_) continue;
-            for (auto [x, y] : {std::pair{a, b}, std::pair{b, a}}) {
-              const int r = rank_of(x, y);
-              if (r >= 0) tau_[idx(x, r)] = (1.0 - xi) * tau_[idx(x, r)] + xi * tau0_;
-            }
-          }
+        // Global update on the best-so-far edges only (applied lazily, see
+        // Trail); their slots are found again when the best route changes,
+        // which it does only with a shorter length.
+        if (reinforced_for != best_len) {
+          std::vector<std::size_t> slots;
+          const std::size_t mm = best_route.size();
+          for (std::size_t i = 0; i < mm; ++i) add_slots(best_route[i], best_route[(i + 1) % mm], slots);
+          tau_.reinforce(slots, best_len);
+          reinforced_for = best_len;
         }
-        // Global update on the best-so-far edges only.
-        const std::size_t mm = best_route.size();
-        for (std::size_t i = 0; i < mm; ++i) {
-          const HoleIndex a = best_route[i], b = best_route[(i + 1) % mm];
-          if (a >= n_ || b >= n_ || (space_.open() && i + 1 == mm)) continue;
-          for (auto [x, y] : {std::pair{a, b}, std::pair{b, a}}) {
-            const int r = rank_of(x, y);
-            if (r >= 0) tau_[idx(x, r)] = (1.0 - rho) * tau_[idx(x, r)] + rho / best_len;
-          }
-        }
+        tau_.global_update();
         break;
       }
     }
     if (!focused) refresh_choice();
+    for (AntWork& w : workers) w.worn.clear();
 
     const double now = clock.seconds();
     if (p_.on_iteration) p_.on_iteration(Progress{it, now, best_len});
     if (p_.time_limit_s > 0.0 && now >= p_.time_limit_s) {
       sol.stop_reason = "time limit";
-      break;
+      return false;
     }
     if (p_.stall_iterations > 0 && since_improvement >= p_.stall_iterations) {
       sol.stop_reason = "stalled";
-      break;
+      return false;
     }
-  }
+    if (it == p_.iterations) return false;
+    ++it;
+    order_ants();
+    return true;
+  };
+  order_ants();
+  if (p_.iterations >= 1) detail::parallel_rounds(p_.ants, p_.threads, sol.thread_busy_s, ant, update);
   sol.iterations = std::min(it, p_.iterations);
   sol.order = to_order(best_route);
   sol.length = route_length(problem_, sol.order);

@@ -1,32 +1,144 @@
 #pragma once
-// The one parallel scaffold: run body(k) for k in [0, count) on `threads`
-// OpenMP workers, each k writing only its own slot. Exceptions may not leave
-// an OpenMP region, so the first one (by index, for determinism) is captured
-// and rethrown after the barrier. Busy time is added up per worker.
+// The one parallel scaffold of the colony: a team of OpenMP workers that stays
+// up for the whole run. Each round every worker takes slots [0, count) one at
+// a time (body(k, worker) writes only slot k and worker's own scratch), then the first worker alone runs
+// between(), the barrier-synced part, which says whether to go on.
+//
+// Why not `omp parallel for` per round: a focused round lasts a few hundred
+// microseconds, and libgomp's barrier spins for up to a few milliseconds
+// before it sleeps. On a busy workstation a spinning worker burns the time
+// slice its partner needs, and two threads ran 3x slower than one (measured,
+// pcb1173, two busy processes beside; see the commit). Here a waiter spins
+// only about as long as a round's serial part lasts, then sleeps and gives
+// the core away. Slots are handed out one at a time, so a worker the kernel
+// has put aside holds up at most the slot it is in.
+//
+// Exceptions may not leave an OpenMP region: the first one (by slot, for
+// determinism) is kept and rethrown once the team has stopped.
 #include <omp.h>
 
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
 #include <exception>
+#include <mutex>
 #include <vector>
 
 namespace aco::detail {
 
-template <class Body>
-void parallel_slots(int count, int threads, std::vector<double>& busy_s, Body&& body) {
-  std::vector<std::exception_ptr> errors(static_cast<std::size_t>(count));
+// Something a thread waits for: spin a little (a round's serial part is tens
+// of microseconds, and waking a sleeper costs about as much), then sleep.
+class Signal {
+ public:
+  // Tells the core this is a spin-wait: it lets the writer's cache line go sooner.
+  static void cpu_relax() {
+#if defined(__x86_64__) || defined(__i386__)
+    __builtin_ia32_pause();
+#endif
+  }
+  template <class Ready>
+  void wait_until(Ready&& ready) {
+    const auto give_up = std::chrono::steady_clock::now() + kSpin;
+    for (unsigned spins = 1; !ready(); ++spins) {
+      cpu_relax();
+      if (spins % 64 == 0 && std::chrono::steady_clock::now() > give_up) {
+        sleepers_.fetch_add(1);
+        {
+          std::unique_lock<std::mutex> lock(mutex_);
+          woken_.wait(lock, ready);
+        }
+        sleepers_.fetch_sub(1);
+        return;
+      }
+    }
+  }
+  // Call after making `ready` true (with a sequentially consistent store): a
+  // waiter either sees it before it sleeps, or is counted here and woken.
+  void notify() {
+    if (sleepers_.load() == 0) return;
+    { std::lock_guard<std::mutex> lock(mutex_); }
+    woken_.notify_all();
+  }
+
+ private:
+  static constexpr std::chrono::microseconds kSpin{100};
+  std::atomic<int> sleepers_{0};
+  std::mutex mutex_;
+  std::condition_variable woken_;
+};
+
+template <class Body, class Between>
+void parallel_rounds(int count, int threads, std::vector<double>& busy_s, Body&& body, Between&& between) {
   if (busy_s.size() < static_cast<std::size_t>(threads)) busy_s.resize(static_cast<std::size_t>(threads), 0.0);
-#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
-  for (int k = 0; k < count; ++k) {
+  std::vector<std::exception_ptr> errors(static_cast<std::size_t>(count));
+  std::exception_ptr between_error;
+  // Busy time is added up where each worker keeps it, and into busy_s at the end.
+  auto run_slot = [&](int k, int worker, double& busy) {
     const double t0 = omp_get_wtime();
     try {
-      body(k);
+      body(k, worker);
     } catch (...) {
       errors[static_cast<std::size_t>(k)] = std::current_exception();
     }
-    busy_s[static_cast<std::size_t>(omp_get_thread_num())] += omp_get_wtime() - t0;
+    busy += omp_get_wtime() - t0;
+  };
+  auto failed = [&] {
+    for (auto& e : errors) {
+      if (e) return true;
+    }
+    return false;
+  };
+  auto go_on = [&] {
+    if (failed()) return false;
+    try {
+      return static_cast<bool>(between());
+    } catch (...) {
+      between_error = std::current_exception();
+      return false;
+    }
+  };
+
+  if (threads <= 1) {
+    double busy = 0.0;
+    do {
+      for (int k = 0; k < count; ++k) run_slot(k, 0, busy);
+    } while (go_on());
+    busy_s[0] += busy;
+  } else {
+    std::atomic<int> next_slot{0};
+    std::atomic<int> finished{0};       // workers done with this round's slots
+    std::atomic<unsigned> round{0};
+    std::atomic<bool> stop{false};
+    Signal all_finished, next_round;
+#pragma omp parallel num_threads(threads)
+    {
+      const int me = omp_get_thread_num();
+      const int team = omp_get_num_threads();  // fewer than asked if the runtime says so
+      double busy = 0.0;
+      for (unsigned my_round = 0;; ++my_round) {
+        for (int k = next_slot.fetch_add(1); k < count; k = next_slot.fetch_add(1)) run_slot(k, me, busy);
+        if (finished.fetch_add(1) + 1 == team) all_finished.notify();
+        if (me == 0) {
+          all_finished.wait_until([&] { return finished.load() == team; });
+          const bool more = go_on();
+          next_slot.store(0);
+          finished.store(0);
+          stop.store(!more);
+          round.store(my_round + 1);
+          next_round.notify();
+          if (!more) break;
+        } else {
+          next_round.wait_until([&] { return round.load() != my_round; });
+          if (stop.load()) break;
+        }
+      }
+      busy_s[static_cast<std::size_t>(me)] += busy;
+    }
   }
   for (auto& e : errors) {
     if (e) std::rethrow_exception(e);
   }
+  if (between_error) std::rethrow_exception(between_error);
 }
 
 }  // namespace aco::detail
