@@ -670,7 +670,9 @@ Solution Colony::run() {
             const std::size_t p1 = a + cut[0], p2 = a + cut[1], p3 = a + cut[2];
             // [a+1..p1] [p1+1..p2] [p2+1..p3] -> swap the middle two blocks
             std::rotate(r.begin() + static_cast<long>(p1 + 1), r.begin() + static_cast<long>(p2 + 1), r.begin() + static_cast<long>(p3 + 1));
-            std::vector<HoleIndex> seeds = {r[a], r[a + 1], r[p1], r[p1 + 1], r[p2], r[p2 + 1], r[p3], r[(p3 + 1) % mm]};
+            // The local search starts at the ends of the three new edges.
+            const std::size_t mid = p1 + (p3 - p2);  // where the swapped blocks now meet
+            std::vector<HoleIndex> seeds = {r[p1], r[p1 + 1], r[mid], r[mid + 1], r[p3], r[(p3 + 1) % mm]};
             kick_searcher_->improve_from(r, or_opt, seeds);
             ref_len_ = space_.route_cost(r);
             set_reference(r);
