@@ -141,8 +141,11 @@ int main(int argc, char** argv) {
                   for (int m : ants)
                     for (int it : iterations)
                       for (double tl : time_limits)
-                        for (int t : threads)
-                          for (int s = 1; s <= seeds; ++s) {
+                        // Seeds outside threads: runs of one seed on 1, 2, ... threads
+                        // follow each other, so a speedup compares runs made under the
+                        // same conditions on a machine whose speed drifts.
+                        for (int s = 1; s <= seeds; ++s)
+                          for (int t : threads) {
                             app::BenchCell c;
                             c.instance = path;
                             c.algorithm = alg;
