@@ -52,7 +52,8 @@ void add_solver_options(CLI::App* cmd, SolverArgs& a) {
   cmd->add_option("--iterations", a.iterations, "Colony iterations (default: 300, or until the time limit)")
       ->check(CLI::Range(1, 100000000));
   cmd->add_option("--algorithm", a.algorithm,
-                  "focused (default: ACS whose ants change a bounded number of the best route's edges; measured best "
+                  "focused (default: ACS whose ants change a bounded number of the best route's edges, with a kick when "
+                  "it stalls and a restart when kicks stop helping; measured best "
                   "from 198 to 15112 holes, docs/benchmarks.md), acs (Ant Colony System over whole routes), mmas "
                   "(MAX-MIN), as (the thesis's Ant System)");
   cmd->add_option("--ants", a.ants, "Ants per iteration (default: 10 with local search, else min(n,100))")
