@@ -13,6 +13,28 @@ def rows(path):
         return list(csv.DictReader(f))
 
 
+def speedup_against_cpus(w, summary, cpu_rows):
+    """Two threads against the best the two fastest CPUs can do: 1 / (1 / t_a + 1 / t_b)."""
+    cpus = sorted({int(r["cpu"]) for r in cpu_rows})
+    by_config = {}
+    for r in cpu_rows:
+        by_config.setdefault((r["algorithm"], r["iterations"]), {})[int(r["cpu"])] = float(r["wall_median_s"])
+    two = {(r["algorithm"], r["iterations"]): float(r["wall_median_s"]) for r in summary if r["threads"] == "2"}
+    w("One thread pinned to each CPU (`taskset -c K`, same seeds): a virtual machine's CPUs need not be equally "
+      "fast, and an unpinned one-thread run lands on any. Two threads can at best take 1 / (1 / t_a + 1 / t_b) "
+      "on the two fastest (serial part aside); the last column is how close they come.\n")
+    w("| algorithm | iterations | " + " | ".join(f"CPU {c} s" for c in cpus) +
+      " | best for two s | two threads s | best / two threads |")
+    w("|---|---:|" + "---:|" * (len(cpus) + 3))
+    for config, times in by_config.items():
+        if config not in two or len(times) != len(cpus):
+            continue
+        best = 1.0 / sum(1.0 / t for t in sorted(times.values())[:2])
+        w(f"| {config[0]} | {config[1]} | " + " | ".join(f"{times[c]:.3f}" for c in cpus) +
+          f" | {best:.3f} | {two[config]:.3f} | {best / two[config]:.2f} |")
+    w("")
+
+
 def main():
     d = sys.argv[1]
     out = []
@@ -112,6 +134,9 @@ def main():
             w(f"| {r['algorithm']} | {r['iterations']} | {r['threads']} | {float(r['wall_median_s']):.3f} | "
               f"{r['speedup']} | {r['efficiency']} |")
         w("")
+        cpus_path = os.path.join(d, "speedup-cpus.csv")
+        if name == "speedup-summary.csv" and os.path.exists(cpus_path):
+            speedup_against_cpus(w, rows(path), rows(cpus_path))
     if os.path.exists(os.path.join(d, "plots-speedup", "speedup.svg")):
         w("![speedup](bench/plots-speedup/speedup.svg)\n")
 
