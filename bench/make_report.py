@@ -42,7 +42,7 @@ def main():
     machine = dict(line.strip().split("=", 1) for line in open(os.path.join(d, "machine.txt")) if "=" in line)
     w("# Benchmarks\n")
     w("Measured by the harness and written by `scripts/benchmarks`; regenerate with that one command "
-      "(about 25 minutes on 2 cores). Raw data: `docs/bench/`.\n")
+      "(about 20 minutes on 2 cores). Raw data: `docs/bench/`.\n")
     w(f"Machine: {machine.get('cpu')}, {machine.get('cores')} cores, {machine.get('memory')}, {machine.get('os')}, "
       f"{machine.get('compiler')}; commit {machine.get('commit')}.\n")
     if machine.get("sections") and machine.get("sections") != "thesis targets gap speedup programs micro":
