@@ -1,8 +1,8 @@
 #pragma once
 // The one parallel scaffold of the colony: a team of OpenMP workers that stays
 // up for the whole run. Each round every worker takes slots [0, count) one at
-// a time (body(k, worker) writes only slot k and worker's own scratch), then the first worker alone runs
-// between(), the barrier-synced part, which says whether to go on.
+// a time (body(k, worker) writes only slot k and worker's own scratch), then the worker that finishes last
+// runs between(), the barrier-synced part, which says whether to go on.
 //
 // Why not `omp parallel for` per round: a focused round lasts a few hundred
 // microseconds, and libgomp's barrier spins for up to a few milliseconds
@@ -109,7 +109,7 @@ void parallel_rounds(int count, int threads, std::vector<double>& busy_s, Body&&
     std::atomic<int> finished{0};       // workers done with this round's slots
     std::atomic<unsigned> round{0};
     std::atomic<bool> stop{false};
-    Signal all_finished, next_round;
+    Signal next_round;
 #pragma omp parallel num_threads(threads)
     {
       const int me = omp_get_thread_num();
@@ -117,9 +117,9 @@ void parallel_rounds(int count, int threads, std::vector<double>& busy_s, Body&&
       double busy = 0.0;
       for (unsigned my_round = 0;; ++my_round) {
         for (int k = next_slot.fetch_add(1); k < count; k = next_slot.fetch_add(1)) run_slot(k, me, busy);
-        if (finished.fetch_add(1) + 1 == team) all_finished.notify();
-        if (me == 0) {
-          all_finished.wait_until([&] { return finished.load() == team; });
+        if (finished.fetch_add(1) + 1 == team) {
+          // The last worker to finish the round's slots runs the serial part
+          // itself: no hand-over, and no worker waits for a partner to wake.
           const bool more = go_on();
           next_slot.store(0);
           finished.store(0);
