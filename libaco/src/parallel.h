@@ -1,8 +1,9 @@
 #pragma once
 // The one parallel scaffold of the colony: a team of OpenMP workers that stays
 // up for the whole run. Each round every worker takes slots [0, count) one at
-// a time (body(k, worker) writes only slot k and worker's own scratch), then the worker that finishes last
-// runs between(), the barrier-synced part, which says whether to go on.
+// a time (body(k, worker) writes only slot k and worker's own scratch); the
+// worker that finishes last then runs between(), the barrier-synced part,
+// which says whether to go on.
 //
 // Why not `omp parallel for` per round: a focused round lasts a few hundred
 // microseconds, and libgomp's barrier spins for up to a few milliseconds
