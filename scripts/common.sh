@@ -7,10 +7,11 @@ cd "$ROOT"
 
 # Debian packages the build and the tests need. Checked with dpkg (fast) and
 # installed only when missing, so a second run costs nothing.
-BUILD_PACKAGES=(cmake ninja-build g++ libeigen3-dev libtinyxml2-dev libgtest-dev libgmock-dev libbenchmark-dev
+BUILD_PACKAGES=(cmake ninja-build g++ gcc make libeigen3-dev libtinyxml2-dev libgtest-dev libgmock-dev libbenchmark-dev
                 nlohmann-json3-dev libcli11-dev libnanoflann-dev help2man)
 TEST_PACKAGES=(python3-ezdxf librsvg2-bin)
-# LinuxCNC's standalone interpreter rs274 reads our programs back in the tests.
+# LinuxCNC's standalone interpreter rs274 reads our programs back in the tests
+# (gcc and make above also build GRBL's own parser, tests/grbl-sim).
 # Headless chromium prints the setup sheet to PDF and pdftotext reads it back.
 TEST_PACKAGES_NO_RECOMMENDS=(linuxcnc-uspace gerbv chromium poppler-utils)
 

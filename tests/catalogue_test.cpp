@@ -125,7 +125,15 @@ std::vector<BadCase> catalogue() {
       {"verify_parameter", "a.nc", "G0 X1 #5\n", "verify {in}", "a.nc:1: parameters and expressions"},
       // Issue 14: a program that does more than drill is refused at its first such line, never reordered.
       {"program_milling_move", "a.nc", "G21 G90\nG0 Z5\nG0 X1 Y1\nG1 Z-1 F100\nG1 X5 Y1\nG0 Z5\nM30\n", "plan {in} -o {out}",
-       "a.nc:5: G1 moves in X/Y: a cutting move: not a drilling program"},
+       "a.nc:5: G1 moves in X/Y at Z-1.000, at or below the top of the part: a cutting move"},
+      // Issue 23: G1 travel is travel only above the part; a program that ends before its holes says where.
+      {"program_g1_at_top", "a.nc", "G21 G90\nG0 Z5\nG0 X1 Y1\nG1 Z-1 F100\nG1 Z0\nG1 X5 Y1\nM30\n", "plan {in} -o {out}",
+       "a.nc:6: G1 moves in X/Y at Z0.000, at or below the top of the part"},
+      {"program_ends_before_its_holes", "a.nc", "G21 G90\nG0 Z5\nM2\nG0 X1 Y1\nG1 Z-1 F100\nG0 Z5\n", "plan {in} -o {out}",
+       "a.nc:3: no holes to drill before the program ends here (M2); 3 line(s) of code after it are not read"},
+      {"program_tapping_for_grbl", "a.nc", "G21 G90\nT1 M6\nS500 M3\nG0 X1 Y1 Z5\nG84 R1 Z-5 F500\nG80\nM30\n",
+       "plan {in} -o {out} --dialect grbl", "a.nc:5: G84 (tapping) cannot be written as moves"},
+      {"unknown_machine_class", "a.csv", kGoodCsv, "plan {in} -o {out} --machine bridgeport", "no machine class \"bridgeport\""},
       {"program_arc", "a.nc", "G21\nG0 X1 Y1 Z5\nG81 R1 Z-1 F100\nG80\nG2 X5 Y1 I2 J0\nM30\n", "plan {in} -o {out}", "a.nc:5: an arc (G2)"},
       {"program_probe", "a.nc", "G21\nG38.2 Z-10 F50\nG0 X1 Y1 Z5\nG81 R1 Z-1 F100\nM30\n", "plan {in} -o {out}", "a.nc:2: probing (G38.2)"},
       {"program_subprogram", "a.nc", "G21\nG0 X1 Y1 Z5\nG81 R1 Z-1 F100\nM98 P100\nM30\n", "plan {in} -o {out}", "a.nc:4: a subprogram call (M98)"},

@@ -321,3 +321,39 @@ TEST(cli_test, slots_are_drilled_in_their_order_or_named_where_skipped) {
   auto noisy = acodrill_run("plan " + q(t / "s.drl") + " -o " + q(t / "n.nc") + " --slots skip");
   EXPECT_THAT(noisy.err, ::testing::HasSubstr("NOT DRILLED: 1 feature(s), first: line 7: slot"));
 }
+
+// Issues 23 and 25: the built-in machine classes. `machines` lists them as
+// NAME<TAB>description; a class changes the time estimate, the generated
+// tools' speeds and the default dialect; its profile printed by --show,
+// given back as a file, plans byte for byte the same.
+TEST(cli_test, machine_classes_are_listed_and_change_the_plan) {
+  TempDir t;
+  auto list = acodrill_run("machines");
+  ASSERT_EQ(list.code, 0) << list.err;
+  EXPECT_THAT(list.out, ::testing::ContainsRegex("(^|\n)vf2\t[^\n]+\n"));
+  EXPECT_THAT(list.out, ::testing::ContainsRegex("(^|\n)router\t[^\n]+\n"));
+  const std::string plate = testutil::source_dir() + "/samples/plate10.dxf";
+  auto plan = [&](const std::string& extra, const std::string& out) {
+    auto r = acodrill_run("plan " + q(plate) + " -o " + q(out) + " --report " + q(out + ".json") + " -q --iterations 10" + extra);
+    EXPECT_EQ(r.code, 0) << r.err;
+    return nlohmann::json::parse(slurp(out + ".json"));
+  };
+  const auto vf2 = plan("", t / "vf2.nc");
+  const auto router = plan(" --machine router", t / "router.nc");
+  // The router has no tool changer and no canned cycles: GRBL, a pause per tool.
+  EXPECT_THAT(slurp(t / "router.nc"), ::testing::HasSubstr("(MSG, PUT IN T1 "));
+  EXPECT_THAT(slurp(t / "vf2.nc"), ::testing::HasSubstr("G81"));
+  // Slower rapids, a manual tool change: the same route takes longer.
+  EXPECT_GT(router["machining_time_s"]["optimized"].get<double>(), vf2["machining_time_s"]["optimized"].get<double>());
+  // --dialect grbl without a machine plans for the router.
+  plan(" --dialect grbl", t / "grbl.nc");
+  EXPECT_EQ(slurp(t / "grbl.nc"), slurp(t / "router.nc"));
+  auto show = acodrill_run("machines --show router");
+  ASSERT_EQ(show.code, 0);
+  spit(t / "my-router.json", show.out);
+  plan(" --machine " + q(t / "my-router.json"), t / "file.nc");
+  EXPECT_EQ(slurp(t / "file.nc"), slurp(t / "router.nc"));
+  auto unknown = acodrill_run("machines --show bridgeport");
+  EXPECT_EQ(unknown.code, 2);
+  EXPECT_THAT(unknown.err, ::testing::HasSubstr("built in: vf2, router"));
+}

@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "aco/error.h"
+#include "aco/hole_set.h"
 #include "aco/solve.h"
 #include "app/bench.h"
 #include "app/errors.h"
@@ -145,6 +146,9 @@ void print_warnings(const app::LoadedHoles& loaded, const std::string& path, boo
   if (quiet) return;
   std::string summary = std::to_string(loaded.holes.size()) + " holes from " + std::string(formats::to_string(loaded.format));
   if (loaded.duplicates_removed) summary += ", " + std::to_string(loaded.duplicates_removed) + " duplicates removed";
+  if (loaded.drilled_again) {
+    summary += ", " + std::to_string(loaded.drilled_again) + " drilled again at the same place (kept, as the program drills them)";
+  }
   if (loaded.skipped_by_filter) summary += ", " + std::to_string(loaded.skipped_by_filter) + " filtered out";
   if (!loaded.drill_function.empty()) summary += " (" + loaded.drill_function + ")";
   if (loaded.slots_drilled) {
@@ -189,6 +193,11 @@ std::string format_minutes(double seconds) {
 int cmd_holes(const std::string& input, const InputArgs& in_args, const std::string& format, bool quiet) {
   if (format != "csv") throw app::UserError("--format must be csv");
   app::LoadedHoles loaded = app::load_holes(input, to_input_options(in_args));
+  if (loaded.program) {
+    // The listing has each position once, as for every other format.
+    loaded.duplicates_removed = aco::remove_duplicate_holes(loaded.holes);
+    loaded.drilled_again = 0;
+  }
   const std::string out = app::holes_csv(loaded.holes);
   std::cout << out;
   std::cout.flush();
@@ -198,7 +207,7 @@ int cmd_holes(const std::string& input, const InputArgs& in_args, const std::str
 
 struct PlanArgs {
   std::string input, output, report, svg, svg_compare, convergence, excellon, gerber, setup_sheet;
-  std::string dialect = "haas", units, tools, machine, material, objective = "distance", origin;
+  std::string dialect, units, tools, machine, material, objective = "distance", origin;
   bool keep_style = false;
   double min_spacing = 0.0;
   std::optional<double> thickness, default_diameter;
@@ -298,7 +307,15 @@ int plan_program(const PlanArgs& a, app::PlanOptions o, const app::LoadedHoles& 
                                     {a.default_diameter.has_value(), "--default-diameter"}}) {
     if (given) throw app::UserError(std::string(name) + " does not apply to a program: its tools, cycles and depths are kept");
   }
-  if (input.hole_count() == 0) throw app::UserError(source, 0, "no holes to drill: the program drills nothing");
+  if (input.hole_count() == 0) {
+    // Say why: reading may have stopped early, at an end with more code after it.
+    if (input.code_lines_after_end > 0) {
+      throw app::UserError(source, input.end_line, "no holes to drill before the program ends here (" + input.end_reason +
+                                                       "); " + std::to_string(input.code_lines_after_end) +
+                                                       " line(s) of code after it are not read");
+    }
+    throw app::UserError(source, 0, "no holes to drill: the program has no drilling move (no canned cycle, no feed down in Z)");
+  }
   const bool inch = a.units.empty() ? input.inch : o.program.units == gcode::Units::Inch;
   if (a.keep_style && inch != input.inch) {
     throw app::UserError("--keep-style keeps the input's units (" + std::string(input.inch ? "inch" : "mm") + "); drop --units");
@@ -325,6 +342,8 @@ int plan_program(const PlanArgs& a, app::PlanOptions o, const app::LoadedHoles& 
   ws.program_number = a.program_number;
   ws.program_name = loaded.name;
   ws.keep_style = a.keep_style;
+  ws.spindle_start_s = o.program.spindle_start_s;
+  ws.travel_feed_mm_min = o.program.travel_feed_mm_min;
   ws.header_comments = {
       "SOURCE: " + source_name + " (A DRILLING PROGRAM, REORDERED)",
       std::to_string(r.holes.size()) + " HOLES IN " + std::to_string(r.plan.groups.size()) + " TOOL RUNS",
@@ -336,7 +355,9 @@ int plan_program(const PlanArgs& a, app::PlanOptions o, const app::LoadedHoles& 
   try {
     gcode::write_drilling(program, r.program, ws);
   } catch (const std::invalid_argument& e) {
-    throw app::UserError(e.what());
+    throw app::UserError(source, 0, e.what());
+  } catch (const gcode::ProgramError& e) {
+    throw app::UserError(source, e.line(), e.what());
   }
   app::Placement placement;
   placement.origin = app::Origin{app::OriginKind::Drawing, {}};
@@ -357,9 +378,22 @@ int cmd_plan(const PlanArgs& a, const SolverArgs& s, const InputArgs& in_args) {
   app::PlanOptions o;
   o.solver = to_params(s);
   const app::Origin origin = parse_origin(a.origin.empty() ? "lower-left" : a.origin);
-  auto dialect = gcode::dialect_from_string(a.dialect);
-  if (!dialect) throw app::UserError("--dialect must be haas, fanuc or linuxcnc (got \"" + a.dialect + "\")");
-  o.program.dialect = *dialect;
+  std::optional<gcode::Dialect> dialect;
+  if (!a.dialect.empty()) {
+    dialect = gcode::dialect_from_string(a.dialect);
+    if (!dialect) {
+      throw app::UserError("--dialect must be haas, fanuc, linuxcnc, grbl or marlin (got \"" + a.dialect + "\")");
+    }
+  }
+  // The machine decides the dialect unless one is given; a GRBL or Marlin
+  // program without a --machine is for the desktop router those controls drive.
+  const std::string machine = !a.machine.empty() ? a.machine
+                              : dialect && !gcode::has_canned_cycles(*dialect) ? "router"
+                                                                               : "vf2";
+  o.machine = app::load_machine(machine);
+  o.program.dialect = dialect.value_or(o.machine.dialect);
+  o.program.spindle_start_s = o.machine.spindle_start_s;
+  o.program.travel_feed_mm_min = o.machine.rapid_xy_mm_min;
   if (a.units.empty() || a.units == "mm") o.program.units = gcode::Units::Mm;
   else if (a.units == "inch" || a.units == "in") o.program.units = gcode::Units::Inch;
   else throw app::UserError("--units must be mm or inch (got \"" + a.units + "\")");
@@ -372,7 +406,6 @@ int cmd_plan(const PlanArgs& a, const SolverArgs& s, const InputArgs& in_args) {
   if (a.objective == "distance") o.objective = app::Objective::Distance;
   else if (a.objective == "time") o.objective = app::Objective::Time;
   else throw app::UserError("--objective must be distance or time (got \"" + a.objective + "\")");
-  if (!a.machine.empty()) o.machine = app::load_machine(a.machine);
   if (!a.tools.empty()) o.tools = app::load_tool_table(a.tools);
 
   app::LoadedHoles loaded = app::load_holes(a.input, to_input_options(in_args));
@@ -528,6 +561,19 @@ int cmd_verify(const std::string& program_path, const std::string& holes_path, c
   return 1;
 }
 
+int cmd_machines(const std::string& show) {
+  for (const app::MachineClass& c : app::machine_classes()) {
+    if (show.empty()) {
+      std::printf("%s\t%s\n", c.name.c_str(), c.description.c_str());
+    } else if (c.name == show) {
+      std::printf("%s\n", c.profile_json.c_str());
+      return 0;
+    }
+  }
+  if (!show.empty()) app::load_machine(show);  // names the classes there are
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -538,7 +584,8 @@ int main(int argc, char** argv) {
                "  acodrill plan board.drl -o board.nc --dialect linuxcnc --units inch\n"
                "  acodrill holes plate.dxf --format csv > holes.csv\n"
                "  acodrill verify plate.nc --holes plate.dxf\n"
-               "  acodrill tsp pcb442.tsp --time-limit 1\n",
+               "  acodrill tsp pcb442.tsp --time-limit 1\n"
+               "  acodrill machines\n",
                "acodrill"};
   cli.set_version_flag("--version", kVersion);
   cli.set_help_all_flag("--help-all", "Print the help of every command and exit (the man page is made from it)");
@@ -560,6 +607,8 @@ int main(int argc, char** argv) {
       "                                                            zero at the holes' centre; a sheet for the operator\n"
       "  acodrill plan plate.dxf -o plate.nc --algorithm as --local-search none --ants 125 --iterations 125\n"
       "                                                            the thesis's Ant System\n"
+      "  acodrill plan board.drl -o board.nc --machine router      a desktop router on GRBL: every hole as G0/G1\n"
+      "                                                            moves, a pause naming each drill (--dialect marlin)\n"
       "  acodrill plan pcb2gcode-drill.ngc -o shorter.ngc --keep-style\n"
       "                                                            another CAM's program, its holes reordered per tool\n"
       "Inputs: DXF, Excellon, Gerber (RS-274X/X2; RS-274D with --apertures), XML hole map, CSV (x,y,diameter mm),\n"
@@ -578,7 +627,11 @@ int main(int argc, char** argv) {
                        "Program zero (X0 Y0) on the part: lower-left (default) | center | upper-left of the holes' "
                        "bounding box, drawing (keep CAD coordinates) or X,Y (a point of the drawing, mm). The "
                        "machinist sets the work offset (G54) there; the program header says where it is");
-  plan_cmd->add_option("--dialect", plan.dialect, "haas (default) | fanuc | linuxcnc");
+  plan_cmd->add_option("--dialect", plan.dialect,
+                       "haas | fanuc | linuxcnc: canned cycles, M6 tool changes; grbl (GRBL 1.1, grblHAL, FluidNC) | "
+                       "marlin: every hole written out as G0/G1 moves (pecks and dwells too), each tool a pause (M0) "
+                       "with a message naming the drill, Z zeroed again on it. Default: the machine's (vf2: haas, "
+                       "router: grbl); grbl or marlin without --machine plans for the router class");
   plan_cmd->add_flag("--keep-style", plan.keep_style,
                      "Program input: keep the input's own lines and style (canned stays canned, expanded stays "
                      "expanded; line numbers renumbered), rewriting only where its holes are drilled");
@@ -588,7 +641,10 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(0.0, 1e4));
   plan_cmd->add_option("--units", plan.units, "Program units: mm (default; a program input keeps its own) | inch");
   plan_cmd->add_option("--tools", plan.tools, "Tool table (JSON); default: one tool per diameter");
-  plan_cmd->add_option("--machine", plan.machine, "Machine profile (JSON); default: HAAS VF-2 class");
+  plan_cmd->add_option("--machine", plan.machine,
+                       "A built-in machine class (acodrill machines: vf2, router) or a profile file (JSON): rapids, "
+                       "acceleration, spindle range, tool change, travel; sets the time estimate, the generated "
+                       "tools' speeds and the default dialect. Default: vf2");
   plan_cmd->add_option("--material", plan.material, "steel | aluminium | pcb: feeds and speeds of generated tools (default steel; pcb for Excellon and Gerber input)");
   plan_cmd->add_option("--thickness", plan.thickness, "Part thickness in mm for generated tools (default 6.35, or 1.6 for pcb)");
   plan_cmd->add_option("--default-diameter", plan.default_diameter,
@@ -636,11 +692,19 @@ int main(int argc, char** argv) {
   verify_cmd->add_flag("-q,--quiet", quiet, "No summary on stderr");
   add_input_options(verify_cmd, verify_in);
 
+  std::string machines_show;
+  auto* machines_cmd = cli.add_subcommand("machines", "List the built-in machine classes (NAME<TAB>description)");
+  machines_cmd->footer("Examples:\n"
+                       "  acodrill machines\n"
+                       "  acodrill machines --show router > my-router.json    a profile to edit, then --machine my-router.json");
+  machines_cmd->add_option("--show", machines_show, "Print the class's profile (JSON, with the sources of its figures)");
+
   // CLI11 would call an unknown command "a subcommand is required"; name it.
   if (argc > 1 && argv[1][0] != '-') {
     const std::string first = argv[1];
-    if (first != "plan" && first != "holes" && first != "tsp" && first != "verify") {
-      std::cerr << "acodrill: error: unknown command \"" << first << "\"; commands: plan, holes, tsp, verify (see acodrill --help)\n";
+    if (first != "plan" && first != "holes" && first != "tsp" && first != "verify" && first != "machines") {
+      std::cerr << "acodrill: error: unknown command \"" << first
+                << "\"; commands: plan, holes, tsp, verify, machines (see acodrill --help)\n";
       return 2;
     }
   }
@@ -664,6 +728,7 @@ int main(int argc, char** argv) {
     if (*holes_cmd) return cmd_holes(holes_input, holes_in, holes_format, quiet);
     if (*tsp_cmd) return cmd_tsp(tsp_input, tsp_tour, tsp_solver, quiet);
     if (*verify_cmd) return cmd_verify(verify_program, verify_holes, verify_origin, verify_in, quiet);
+    if (*machines_cmd) return cmd_machines(machines_show);
   } catch (const app::UserError& e) {
     std::cerr << "acodrill: error: " << e.where_what() << "\n";
     return 2;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <filesystem>
 #include <limits>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -28,8 +29,7 @@ double json_number(const json& j, const char* key, double fallback, const std::s
   return d;
 }
 
-json parse_json_file(const std::string& path) {
-  const std::string text = read_file(path);
+json parse_json_text(const std::string& text, const std::string& path) {
   try {
     return json::parse(text);
   } catch (const json::parse_error& e) {
@@ -42,13 +42,41 @@ json parse_json_file(const std::string& path) {
   }
 }
 
+json parse_json_file(const std::string& path) { return parse_json_text(read_file(path), path); }
+
 }  // namespace
 
-Machine load_machine(const std::string& path) {
-  json j = parse_json_file(path);
+Machine load_machine(const std::string& name_or_path) {
+  // A name without a path separator or extension is a built-in class, unless a file of that name is here.
+  const bool plain = name_or_path.find_first_of("/.") == std::string::npos;
+  if (plain && !std::filesystem::exists(name_or_path)) {
+    std::string names;
+    for (const MachineClass& c : machine_classes()) {
+      if (c.name == name_or_path) return parse_machine(c.profile_json, "machine class " + c.name);
+      names += (names.empty() ? "" : ", ") + c.name;
+    }
+    throw UserError("--machine: no machine class \"" + name_or_path + "\" (built in: " + names +
+                    "; or give a profile file, see acodrill machines)");
+  }
+  return parse_machine(read_file(name_or_path), name_or_path);
+}
+
+Machine parse_machine(const std::string& text, const std::string& path) {
+  json j = parse_json_text(text, path);
   if (!j.is_object()) throw UserError(path, 1, "a machine profile is a JSON object");
   Machine m;
   if (j.contains("name") && j["name"].is_string()) m.name = j["name"].get<std::string>();
+  if (j.contains("dialect")) {
+    auto d = j["dialect"].is_string() ? gcode::dialect_from_string(j["dialect"].get<std::string>()) : std::nullopt;
+    if (!d) throw UserError(path, 0, "\"dialect\" must be haas, fanuc, linuxcnc, grbl or marlin");
+    m.dialect = *d;
+  }
+  if (j.contains("tool_changer")) {
+    if (!j["tool_changer"].is_boolean()) throw UserError(path, 0, "\"tool_changer\" must be true or false");
+    m.tool_changer = j["tool_changer"].get<bool>();
+  }
+  m.spindle_start_s = json_number(j, "spindle_start_s", m.spindle_start_s, path);
+  if (!(m.spindle_start_s >= 0 && m.spindle_start_s <= 600)) throw UserError(path, 0, "spindle_start_s must be 0..600");
   m.rapid_xy_mm_min = json_number(j, "rapid_xy_mm_min", m.rapid_xy_mm_min, path);
   m.rapid_z_mm_min = json_number(j, "rapid_z_mm_min", m.rapid_z_mm_min, path);
   m.accel_mm_s2 = json_number(j, "accel_mm_s2", m.accel_mm_s2, path);
@@ -279,17 +307,18 @@ std::string zero_comment(const Placement& p) {
 }
 
 std::optional<aco::Point2> stated_zero(std::string_view program) {
-  static constexpr std::string_view kTag = "(PROGRAM ZERO AT DRAWING X";
+  // "(PROGRAM ZERO AT ...)", or "; PROGRAM ZERO AT ..." in a Marlin program.
+  static constexpr std::string_view kTag = "PROGRAM ZERO AT DRAWING X";
   const auto at = program.find(kTag);
   if (at == std::string_view::npos) return std::nullopt;
-  // Locale-free, as the emitter wrote it: "<x> Y<y> MM)".
+  // Locale-free, as the emitter wrote it: "<x> Y<y> MM".
   std::string_view rest = program.substr(at + kTag.size(), 80);
   double x = 0, y = 0;
   auto rx = std::from_chars(rest.data(), rest.data() + rest.size(), x);
   if (rx.ec != std::errc() || rest.substr(static_cast<std::size_t>(rx.ptr - rest.data()), 2) != " Y") return std::nullopt;
   rest.remove_prefix(static_cast<std::size_t>(rx.ptr - rest.data()) + 2);
   auto ry = std::from_chars(rest.data(), rest.data() + rest.size(), y);
-  if (ry.ec != std::errc() || rest.substr(static_cast<std::size_t>(ry.ptr - rest.data()), 4) != " MM)") return std::nullopt;
+  if (ry.ec != std::errc() || rest.substr(static_cast<std::size_t>(ry.ptr - rest.data()), 3) != " MM") return std::nullopt;
   if (!std::isfinite(x) || !std::isfinite(y)) return std::nullopt;
   return aco::Point2{x, y};
 }

@@ -37,6 +37,13 @@ void filter(LoadedHoles& out, const InputOptions& options) {
     kept.push_back(std::move(h));
   }
   out.holes = std::move(kept);
+  if (out.program) {
+    // A program drills what it drills: a position drilled twice stays twice
+    // (plan keeps every hole as the program makes it); it is only counted.
+    aco::HoleSet copy = out.holes;
+    out.drilled_again = aco::remove_duplicate_holes(copy);
+    return;
+  }
   out.duplicates_removed += aco::remove_duplicate_holes(out.holes);
 }
 

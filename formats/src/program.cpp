@@ -31,6 +31,7 @@ LoadedHoles parse_program(const std::string& path, std::string_view data) {
     throw InputError(path, e.line(), e.what());
   }
   out.metric = !out.program->inch;
+  for (const gcode::DrillingProgram::Note& n : out.program->notes) out.warnings.push_back({n.line, n.message});
   out.holes = program_holes(*out.program);
   return out;
 }

@@ -39,7 +39,7 @@ std::string_view trim(std::string_view s) {
 std::string strip_comments(std::string_view line, std::string& comment, std::uint32_t lineno) {
   std::string code;
   int depth = 0;
-  for (char ch : line) {
+  for (const char& ch : line) {
     if (depth > 0) {
       if (ch == '(') ++depth;
       if (ch == ')') --depth;
@@ -51,7 +51,17 @@ std::string strip_comments(std::string_view line, std::string& comment, std::uin
       if (!comment.empty()) comment += ' ';
       continue;
     }
-    if (ch == ';') break;
+    if (ch == ';') {
+      // The rest of the line is a comment (Marlin's only kind, and common on
+      // GRBL): its text counts like a (...) comment's, for tool diameters.
+      const std::size_t at = static_cast<std::size_t>(&ch - line.data());
+      std::string_view rest = trim(line.substr(at + 1));
+      if (!rest.empty()) {
+        if (!comment.empty()) comment += ' ';
+        comment += rest;
+      }
+      break;
+    }
     code += ch;
   }
   if (depth > 0) throw ProgramError(lineno, "unclosed comment");
@@ -171,8 +181,24 @@ class Reader {
       if (line.empty()) continue;
       if (line.front() == '%') {
         // A lone % opens and closes the program; text after the closing one is
-        // not part of it. "%..." with text is a comment line (some posts).
-        if (trim(line.substr(1)).empty() && ++percents == 2) break;
+        // not part of it. "%..." with text is a comment line (some posts), and
+        // so is a lone % with more of the program after it: hobby posts write
+        // "%" lines as notes, and their senders skip them.
+        if (trim(line.substr(1)).empty() && ++percents == 2) {
+          if (code_lines_in(text.substr(std::min(pos, text.size()))) == 0) {
+            end_at("the closing %", text.substr(std::min(pos, text.size())));
+            break;
+          }
+          out_.notes.push_back({lineno_, "a % line with more of the program after it: read as a note"});
+          percents = 1;
+        }
+        continue;
+      }
+      if (auto message = pause_message(line)) {
+        // Marlin's "M0 Put in the 1 mm drill": a pause and what it tells the operator.
+        last_comment_ = *message;
+        tool_from_message(*message);
+        block(parse_words(line.substr(0, line.size() - message->size()), lineno_));
         continue;
       }
       if (line.front() == 'O' || line.front() == 'o') {
@@ -184,6 +210,7 @@ class Reader {
         continue;
       }
       block(parse_words(line, lineno_));
+      if (ended_) end_at(ended_by_, text.substr(std::min(pos, text.size())));
     }
     close_hole();
     // Where the program leaves the spindle, when it moved on from the last hole.
@@ -197,6 +224,69 @@ class Reader {
   }
 
  private:
+  // Lines with code (not blank, not only comments, not "%") in `rest`.
+  static std::size_t code_lines_in(std::string_view rest) {
+    std::size_t count = 0;
+    for (std::size_t pos = 0; pos < rest.size();) {
+      std::size_t nl = rest.find('\n', pos);
+      if (nl == std::string_view::npos) nl = rest.size();
+      const std::string code = code_of(rest.substr(pos, nl - pos));
+      std::string_view c = trim(code);
+      if (!c.empty() && c.front() != '%') ++count;
+      pos = nl + 1;
+    }
+    return count;
+  }
+
+  void end_at(const std::string& reason, std::string_view rest) {
+    out_.end_line = lineno_;
+    out_.end_reason = reason;
+    out_.code_lines_after_end = code_lines_in(rest);
+    if (out_.code_lines_after_end > 0) {
+      out_.notes.push_back({lineno_, "the program ends here (" + reason + "); " +
+                                         std::to_string(out_.code_lines_after_end) +
+                                         " line(s) of code after it are not read"});
+    }
+  }
+
+  // "M0 text", "M1 text", "M117 text": Marlin shows the text; returns it.
+  static std::optional<std::string> pause_message(std::string_view line) {
+    if (line.size() < 3 || (line[0] != 'M' && line[0] != 'm')) return std::nullopt;
+    std::size_t i = 1;
+    while (i < line.size() && std::isdigit(static_cast<unsigned char>(line[i]))) ++i;
+    int code = -1;
+    std::from_chars(line.data() + 1, line.data() + i, code);
+    if (code != 0 && code != 1 && code != 117 && code != 118) return std::nullopt;
+    if (i >= line.size() || !is_blank(line[i])) return std::nullopt;
+    std::string_view rest = trim(line.substr(i));
+    if (rest.empty()) return std::nullopt;
+    // Words ("M0 P500", "M1 S2") are not a message.
+    try {
+      parse_words(rest, 0);
+      return std::nullopt;
+    } catch (const ProgramError&) {
+      return std::string(rest);
+    }
+  }
+
+  // A program without T words (Marlin has none for a spindle) that names the
+  // tool in a pause message ("M0 Put in T2 ...") changes to it there.
+  void tool_from_message(const std::string& message) {
+    if (t_words_seen_) return;
+    const std::string m = upper(message);
+    for (std::size_t i = 0; i + 1 < m.size(); ++i) {
+      if (m[i] != 'T' || (i > 0 && std::isalnum(static_cast<unsigned char>(m[i - 1])))) continue;
+      int tool = 0;
+      auto r = std::from_chars(m.data() + i + 1, m.data() + m.size(), tool);
+      if (r.ec != std::errc() || tool <= 0 || (r.ptr < m.data() + m.size() && std::isalnum(static_cast<unsigned char>(*r.ptr)))) {
+        continue;
+      }
+      if (tool != selected_tool_) boundary_ = true;
+      selected_tool_ = tool;
+      return;
+    }
+  }
+
   [[noreturn]] void refuse(const std::string& what) {
     throw ProgramError(lineno_, what + ": not a drilling program acodrill can reorder");
   }
@@ -257,7 +347,10 @@ class Reader {
         case 'M':
           switch (code) {
             case 0: case 10: stop = true; break;
-            case 20: case 300: ended_ = true; break;
+            case 20: case 300:
+              ended_ = true;
+              ended_by_ = "M" + w.text;
+              break;
             case 30: spindle_dir = 3; break;
             case 40: spindle_dir = 4; break;
             case 50: spindle_dir = 0; break;
@@ -282,6 +375,7 @@ class Reader {
           rpm_ = w.value;
           break;
         case 'T': {
+          t_words_seen_ = true;
           const int t = static_cast<int>(w.value);
           if (t != selected_tool_) boundary_ = true;
           selected_tool_ = t;
@@ -310,7 +404,7 @@ class Reader {
       spindle_ = *spindle_dir;
     }
     if (dwell) {
-      if (hole_.open && !hole_.out) hole_move({ZMove::Dwell, 0.0, 0.0, wp.value_or("0")});
+      if (hole_.open && !hole_.out) hole_move({ZMove::Dwell, 0.0, 0.0, wp.value_or("0"), dwell_seconds(wp.value_or("0"), false)});
       wp.reset();
     }
     if (g80) {
@@ -328,7 +422,10 @@ class Reader {
       // G28/G30: to home through an intermediate point; drilling programs use
       // them for Z. The spindle is then at machine Z home.
       if (wx || wy) close_hole();
-      if (wz) z_.reset();
+      if (wz) {
+        z_.reset();
+        z_homed_ = true;
+      }
       stopped(stop);
       return;
     }
@@ -337,7 +434,10 @@ class Reader {
         const aco::Point2 to{wx.value_or(xy_.x), wy.value_or(xy_.y)};
         rapid_to(to);
       }
-      if (wz) z_.reset();  // machine Z, usually home
+      if (wz) {
+        z_.reset();  // machine Z, usually home
+        z_homed_ = true;
+      }
       stopped(stop);
       return;
     }
@@ -409,12 +509,30 @@ class Reader {
     std::optional<double> nz;
     if (wz) nz = absolute_ ? *wz : z_.value_or(0.0) + *wz;
     if (motion_ == Motion::Feed && d > kTiny) {
-      if (options_.drilling_only) refuse("G1 moves in X/Y: a cutting move");
-      close_hole();
-      xy_ = to;
-      arrive_z_ = z_;
-      approach_.clear();
-      if (nz) z_ = nz;
+      // Hobby posts travel between holes with G1 well above the part: above
+      // the top of the stock (Z > 0), or where the last hole's feed began.
+      // Z not known after a move to machine Z home: the spindle is at the top.
+      const std::optional<double> low = nz && z_ ? std::min(*nz, *z_) : z_ ? z_ : z_homed_ ? nz : std::nullopt;
+      const bool above = (!z_ && z_homed_ && !nz) ||
+                         (low && (*low > kTiny || (feed_start_z_ && *low >= *feed_start_z_ - kTiny)));
+      if (!above) {
+        if (options_.drilling_only) {
+          refuse("G1 moves in X/Y at Z" + (z_ ? format_number(*z_, 3) : std::string(" unknown")) +
+                 ", at or below the top of the part: a cutting move");
+        }
+        close_hole();
+        xy_ = to;
+        arrive_z_ = z_;
+        approach_.clear();
+        if (nz) z_ = nz;
+        return;
+      }
+      if (nz && (!z_ || *nz > *z_)) z_ = nz;
+      rapid_to(to);
+      if (nz && *nz < z_.value_or(std::numeric_limits<double>::infinity())) {
+        approach_.push_back({ZMove::Feed, *nz, feed_, "", 0.0});
+        z_ = nz;
+      }
       return;
     }
     if (d <= kTiny && (wx_given_ || wy_given_)) {
@@ -430,7 +548,7 @@ class Reader {
       if (nz && (!z_ || *nz > *z_)) z_ = nz;
       rapid_to(to);
       if (nz && *nz < z_.value_or(std::numeric_limits<double>::infinity())) {
-        approach_.push_back({ZMove::Rapid, *nz, 0.0, ""});
+        approach_.push_back({ZMove::Rapid, *nz, 0.0, "", 0.0});
         z_ = nz;
       }
       return;
@@ -454,13 +572,14 @@ class Reader {
         h.cycle.moves = approach_;
         run.holes.push_back(std::move(h));
         hole_ = OpenHole{true, out_.runs.size() - 1, run.holes.size() - 1, *z_, false, {}};
+        feed_start_z_ = *z_;
         approach_.clear();
       }
-      hole_move({ZMove::Feed, *nz, feed_, ""});
+      hole_move({ZMove::Feed, *nz, feed_, "", 0.0});
       z_ = nz;
       return;
     }
-    const ZMove m{motion_ == Motion::Feed ? ZMove::Feed : ZMove::Rapid, *nz, feed_, ""};
+    const ZMove m{motion_ == Motion::Feed ? ZMove::Feed : ZMove::Rapid, *nz, feed_, "", 0.0};
     z_ = nz;
     if (!hole_.open) {
       approach_.push_back(m);
@@ -545,6 +664,12 @@ class Reader {
   double feed_ = 0.0, rpm_ = 0.0;
   int spindle_ = 0, selected_tool_ = 0, work_offset_ = 54, length_offset_ = 0, coolant_ = 0;
   bool wx_given_ = false, wy_given_ = false;  // the block being run has X / Y words
+  bool t_words_seen_ = false;
+  bool z_homed_ = false;  // z_ unknown means at machine Z home (G28/G53 Z), not "never said"
+  std::string ended_by_;
+  // The Z where the last hole's feed began: the spindle is above the part
+  // there, so a G1 in X/Y at or above it travels, it does not cut.
+  std::optional<double> feed_start_z_;
   bool boundary_ = false, pending_change_ = false, pending_pause_ = false;
   std::string last_comment_;
 };

@@ -11,6 +11,7 @@
 
 #include "block_text.h"
 #include "gcode/drilling.h"
+#include "hobby_writer.h"
 
 namespace gcode {
 
@@ -186,6 +187,54 @@ void write_dialect(std::ostream& out, const DrillingProgram& p, const DrillingWr
   w.line("%");
 }
 
+// GRBL and Marlin: the dialect's skeleton with every hole written out as
+// moves, each tool a pause that names its drill. The spindle crosses between
+// holes at the run's travel plane and changes tools at the highest of them.
+void write_hobby(std::ostream& out, const DrillingProgram& p, const DrillingWriteSettings& s) {
+  HobbyWriter w(out, s.dialect, s.inch, s.decimals, s.travel_feed_mm_min);
+  w.comment(s.program_name + " - FOR " + (s.dialect == Dialect::Grbl ? "GRBL 1.1" : "MARLIN"));
+  for (const std::string& text : s.header_comments) w.comment(text);
+  auto size = [&](double mm) { return format_number(s.inch ? mm / kMmPerInch : mm, s.inch ? 4 : 3) + (s.inch ? " IN" : " MM"); };
+  double clear_z = -std::numeric_limits<double>::infinity();
+  for (const ToolRun& run : p.runs) {
+    if (run.holes.empty()) continue;
+    clear_z = std::max(clear_z, travel_of(run).z_mm);
+    if (run.tool > 0) {
+      w.comment("T" + std::to_string(run.tool) + (run.diameter_mm ? " D=" + size(*run.diameter_mm) : "") + " - " +
+                std::to_string(run.holes.size()) + " HOLES");
+    }
+  }
+  w.start();
+  std::optional<int> tool_in;
+  for (const ToolRun& run : p.runs) {
+    if (run.holes.empty()) continue;
+    const Travel travel = travel_of(run);
+    w.comment((run.tool > 0 ? "T" + std::to_string(run.tool) + ", " : std::string("NO TOOL NUMBER, ")) +
+              std::to_string(run.holes.size()) + " HOLES" + (run.message.empty() ? "" : ": " + run.message));
+    if (!tool_in || *tool_in != run.tool || run.pause) {
+      const std::string drill = run.tool > 0 ? "T" + std::to_string(run.tool) : std::string("THE DRILL");
+      w.pause_for("PUT IN " + drill + (run.diameter_mm ? " " + size(*run.diameter_mm) + " DRILL" : "") +
+                      ", ZERO Z ON THE PART TOP, RESUME",
+                  clear_z);
+      tool_in = run.tool;
+    }
+    w.select_tool(run.tool);
+    w.work_offset(run.work_offset);
+    if (run.spindle != 0) w.spindle_on(run.spindle, run.spindle_rpm, s.spindle_start_s);
+    if (run.coolant) w.coolant_on();
+    for (const ProgramHole& h : run.holes) {
+      if (h.cycle.code == 0) {
+        w.hole(h.at, h.cycle.moves, travel.z_mm);
+        continue;
+      }
+      const double retract = h.cycle.retract_initial ? std::max(travel.z_mm, h.cycle.r_mm) : h.cycle.r_mm;
+      w.hole(h.at, expand_cycle(h.cycle, retract, h.line), travel.z_mm);
+    }
+    w.coolant_off();
+  }
+  w.end(clear_z, p.end);
+}
+
 // Does the line only move, cycle or set cycle words (what a regenerated
 // stretch writes anew), or does it also do something else (G43, M8, S...)?
 bool hole_making_only(std::string_view raw) {
@@ -321,6 +370,7 @@ void write_drilling(std::ostream& out, const DrillingProgram& program, const Dri
     throw std::invalid_argument("program number must be 1..99999");
   }
   if (settings.keep_style) write_keep_style(out, program, settings);
+  else if (!has_canned_cycles(settings.dialect)) write_hobby(out, program, settings);
   else write_dialect(out, program, settings);
 }
 

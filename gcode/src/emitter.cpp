@@ -8,7 +8,9 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "gcode/drilling.h"
 #include "gcode/program.h"
+#include "hobby_writer.h"
 
 namespace gcode {
 
@@ -81,12 +83,16 @@ const char* to_string(Dialect d) {
     case Dialect::Haas: return "haas";
     case Dialect::Fanuc: return "fanuc";
     case Dialect::LinuxCnc: return "linuxcnc";
+    case Dialect::Grbl: return "grbl";
+    case Dialect::Marlin: return "marlin";
   }
   return "?";
 }
 
+bool has_canned_cycles(Dialect d) { return d != Dialect::Grbl && d != Dialect::Marlin; }
+
 std::optional<Dialect> dialect_from_string(const std::string& name) {
-  for (Dialect d : {Dialect::Haas, Dialect::Fanuc, Dialect::LinuxCnc}) {
+  for (Dialect d : {Dialect::Haas, Dialect::Fanuc, Dialect::LinuxCnc, Dialect::Grbl, Dialect::Marlin}) {
     if (name == to_string(d)) return d;
   }
   return std::nullopt;
@@ -121,18 +127,78 @@ std::string format_number(double value, int decimals) {
   return s;
 }
 
+namespace {
+
+// The tool's canned cycle as the words a canned-cycle control would be given.
+HoleCycle cycle_of(const Tool& t, const ProgramSettings& s) {
+  HoleCycle c;
+  c.code = t.cycle == Cycle::G82 ? 82 : t.cycle == Cycle::G83 ? 83 : t.cycle == Cycle::G73 ? 73 : 81;
+  c.z_mm = t.depth_mm;
+  c.r_mm = s.r_plane_mm;
+  if (c.code == 83 || c.code == 73) c.q_mm = t.peck_mm;
+  if (c.code == 82) c.p = format_number(t.dwell_s, 3);  // with a decimal point: seconds
+  c.feed_mm_min = t.feed_mm_min;
+  return c;
+}
+
+// GRBL and Marlin: the same holes, each written out as the moves its cycle
+// makes; a tool change is a pause that names the drill.
+void write_hobby_program(std::ostream& out, const std::vector<ToolPass>& passes, const ProgramSettings& s) {
+  const bool inch = s.units == Units::Inch;
+  HobbyWriter w(out, s.dialect, inch, inch ? 4 : 3, s.travel_feed_mm_min);
+  w.comment(s.program_name + " - FOR " + (s.dialect == Dialect::Grbl ? "GRBL 1.1" : "MARLIN"));
+  for (const std::string& text : s.header_comments) w.comment(text);
+  if (s.resume_from > 1) w.comment("RESUMED AT HOLE " + std::to_string(s.resume_from));
+  auto size = [&](double mm) { return format_number(inch ? mm / 25.4 : mm, inch ? 4 : 3) + (inch ? " IN" : " MM"); };
+  for (const ToolPass& p : passes) {
+    w.comment("T" + std::to_string(p.tool.number) + " D=" + size(p.tool.diameter_mm) + " - " + tool_name(p.tool) + " - " +
+              std::to_string(p.holes.size()) + " HOLES");
+  }
+  w.comment("EACH TOOL: A PAUSE TO PUT IN ITS DRILL AND ZERO Z ON THE PART TOP");
+  w.start();
+  w.rapid_z(s.initial_z_mm);
+  for (const ToolPass& p : passes) {
+    std::size_t first = 0;
+    while (first < p.holes.size() && p.index[first] < s.resume_from) ++first;
+    if (first == p.holes.size()) continue;
+    const Tool& t = p.tool;
+    w.comment("T" + std::to_string(t.number) + " " + tool_name(t) + ", " + std::to_string(p.holes.size() - first) + " HOLES");
+    w.pause_for("PUT IN T" + std::to_string(t.number) + " " + tool_name(t) + ", ZERO Z ON THE PART TOP, RESUME",
+                s.initial_z_mm);
+    w.select_tool(t.number);
+    w.spindle_on(3, t.spindle_rpm, s.spindle_start_s);
+    const HoleCycle cycle = cycle_of(t, s);
+    for (std::size_t i = first; i < p.holes.size(); ++i) {
+      const bool last = i + 1 == p.holes.size();
+      const bool clear = i < p.clear_after.size() && p.clear_after[i];
+      // As G99/G98: back to R between holes, to the initial plane after a
+      // tool's last hole and before a move over a clamp.
+      const double retract = !s.retract_to_r || last || clear ? s.initial_z_mm : s.r_plane_mm;
+      w.comment("HOLE " + std::to_string(p.index[i]));
+      w.hole(p.holes[i], expand_cycle(cycle, retract, 0), s.r_plane_mm);
+    }
+  }
+  w.end(s.initial_z_mm, s.home);
+}
+
+}  // namespace
+
 void write_program(std::ostream& out, const std::vector<ToolPass>& passes, const ProgramSettings& s) {
   if (s.program_number < 1 || s.program_number > 99999) {
     throw std::invalid_argument("program number must be 1..99999");
   }
   if (!(s.r_plane_mm < s.initial_z_mm)) throw std::invalid_argument("the R plane must lie below the initial Z");
-  Writer w(out, s);
   std::size_t total = 0;
   for (const ToolPass& p : passes) total += p.holes.size();
   if (s.resume_from < 1 || (total > 0 && s.resume_from > total)) {
     throw std::invalid_argument("--resume-from " + std::to_string(s.resume_from) + " is outside 1.." +
                                 std::to_string(total));
   }
+  if (!has_canned_cycles(s.dialect)) {
+    write_hobby_program(out, passes, s);
+    return;
+  }
+  Writer w(out, s);
 
   w.line("%");
   char oline[16];

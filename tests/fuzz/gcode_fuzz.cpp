@@ -3,6 +3,7 @@
 // read back to as many holes as the input has. A mismatch aborts (a finding).
 #include <cstdlib>
 #include <sstream>
+#include <stdexcept>
 
 #include "fuzz_targets.h"
 #include "gcode/drilling.h"
@@ -25,6 +26,22 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       gcode::write_drilling(out, p, s);
       const gcode::DrillingProgram back = gcode::read_drilling(out.str());
       if (!keep && back.hole_count() != p.hole_count()) std::abort();
+    }
+    // GRBL and Marlin: canned cycles written out as moves read back to the same holes.
+    for (gcode::Dialect d : {gcode::Dialect::Grbl, gcode::Dialect::Marlin}) {
+      gcode::DrillingWriteSettings s;
+      s.dialect = d;
+      s.inch = p.inch;
+      s.decimals = p.decimals;
+      s.travel_feed_mm_min = 5000;
+      std::ostringstream out;
+      try {
+        gcode::write_drilling(out, p, s);
+      } catch (const std::invalid_argument&) {
+        continue;  // a travel plane at or below the part: refused, not written
+      }
+      const gcode::DrillingProgram back = gcode::read_drilling(out.str());
+      if (back.hole_count() != p.hole_count()) std::abort();
     }
   } catch (const gcode::ProgramError&) {
   }

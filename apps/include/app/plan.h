@@ -17,9 +17,15 @@
 namespace app {
 
 // A machine profile (JSON, see README "Machine profile"); defaults describe a
-// HAAS VF-2-class vertical mill.
+// HAAS VF-2-class vertical mill. `acodrill machines` lists the built-in classes.
 struct Machine {
   std::string name = "HAAS VF-2 class";
+  // The dialect its control reads, used when --dialect is not given.
+  gcode::Dialect dialect = gcode::Dialect::Haas;
+  // False: the operator changes drills by hand at a pause (tool_change_s is
+  // then that manual change, re-zeroing Z included).
+  bool tool_changer = true;
+  double spindle_start_s = 0.0;      // a control that does not wait for its spindle waits this long after M3
   double rapid_xy_mm_min = 25400.0;  // 1000 in/min
   double rapid_z_mm_min = 25400.0;
   double accel_mm_s2 = 2500.0;       // per axis
@@ -45,7 +51,19 @@ struct Machine {
 // True when the straight move a → b passes over any clamp of the machine.
 bool crosses_clamp(aco::Point2 a, aco::Point2 b, const Machine& machine);
 
-Machine load_machine(const std::string& path);
+// The built-in machine classes: a name, one line saying what it is, and its
+// profile as JSON (the same keys a --machine FILE has, with the sources of
+// its figures under "sources").
+struct MachineClass {
+  std::string name, description, profile_json;
+};
+const std::vector<MachineClass>& machine_classes();
+
+// A built-in class by name, or a profile file; throws UserError naming the
+// file (and line, for bad JSON) or the classes there are.
+Machine load_machine(const std::string& name_or_path);
+// A profile from its JSON text (`source` names it in errors).
+Machine parse_machine(const std::string& json_text, const std::string& source);
 
 // Cutting data presets for generated tool tables.
 enum class Material { Steel, Aluminium, Pcb };

@@ -64,6 +64,8 @@ struct LoadedHoles {
   InputFormat format = InputFormat::Csv;
   std::vector<Note> warnings;
   std::size_t duplicates_removed = 0;
+  // A drilling program: holes it drills again at the same place (kept in `holes`).
+  std::size_t drilled_again = 0;
   std::size_t skipped_by_filter = 0;
   std::string name;            // TSPLIB NAME or the file's stem
   std::optional<bool> metric;  // the units the file itself is written in, where it says (Excellon)
@@ -101,7 +103,7 @@ aco::HoleSet program_holes(const gcode::DrillingProgram& program);
 InputFormat detect_format(const std::string& path, std::string_view data);
 
 // Chooses the reader by content, reads, applies the layer and diameter
-// filters and drops exact duplicates. `path` names the file in messages ("-": standard input).
+// filters and drops exact duplicates (a program's are counted, not dropped). `path` names the file in messages ("-": standard input).
 LoadedHoles parse_holes(const std::string& path, std::string_view data, const InputOptions& options);
 
 }  // namespace formats

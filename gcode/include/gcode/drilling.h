@@ -32,7 +32,27 @@ struct ZMove {
   double z_mm = 0.0;           // Rapid, Feed: absolute work Z
   double feed_mm_min = 0.0;    // Feed: the feed rate in force
   std::string dwell;           // Dwell: P as written ("1.0", "500")
+  double dwell_s = 0.0;        // Dwell: the same in seconds (dwell_seconds)
 };
+
+// A dwell's P as seconds. With a decimal point P is seconds on every control;
+// without one, HAAS and Fanuc count milliseconds where LinuxCNC and GRBL count
+// seconds: a canned cycle's integer P (a HAAS/Fanuc habit) and an integer G4 P
+// of 100 or more are read as milliseconds, a smaller G4 P as seconds.
+double dwell_seconds(std::string_view p, bool canned_cycle);
+
+struct HoleCycle;
+// The moves a control makes for one canned-cycle hole once it is over the
+// hole at or above R, as LinuxCNC runs them (../shared/gcode.md): a rapid to
+// R, then G81 feed down; G82 feed down and dwell; G83 pecks of Q, each back
+// to R and rapidly down again to 0.254 mm (0.010 in) above the depth reached;
+// G73 pecks of Q backing off 0.254 mm; G85 feed down and feed out; G89 feed
+// down, dwell, feed out; then a rapid out to `retract_z_mm` (R for G99, the
+// initial plane for G98). Written out this way a control without canned
+// cycles (GRBL, Marlin) drills the same hole. Throws ProgramError (`line`)
+// for the cycles that cannot be made of moves: tapping (G84, G74), back
+// boring (G87), G86 and G88 (spindle stops and manual moves).
+std::vector<ZMove> expand_cycle(const HoleCycle& cycle, double retract_z_mm, std::uint32_t line);
 
 // How one hole is made. Positions and lengths in mm, work coordinates.
 struct HoleCycle {
@@ -85,6 +105,18 @@ struct DrillingProgram {
   // Where the spindle went in XY after the last hole, when it moved on (a park position).
   std::optional<aco::Point2> end;
   bool uses_line_numbers = false;
+  // Where reading stopped: the line of the program's end (M2, M30 or the
+  // closing %), what ended it, and how many lines of code came after it
+  // (not read). 0 / empty: the text ran out.
+  std::uint32_t end_line = 0;
+  std::string end_reason;
+  std::size_t code_lines_after_end = 0;
+  // What a user should know about how the program was read, by line.
+  struct Note {
+    std::uint32_t line = 0;
+    std::string message;
+  };
+  std::vector<Note> notes;
   std::string text;                      // the program as read: what keep-style copies
   double rapid_xy_mm = 0.0;              // XY length of rapid moves, from X0 Y0
   std::size_t tool_changes = 0;
@@ -112,11 +144,16 @@ struct DrillingWriteSettings {
   // stretches where a run drills is copied as it is; each stretch is written
   // anew, in the new order, canned holes canned and expanded ones expanded.
   bool keep_style = false;
+  // GRBL and Marlin (as in ProgramSettings): the spindle's time to come to
+  // speed, and the feed of Marlin's G0 moves.
+  double spindle_start_s = 0.0;
+  double travel_feed_mm_min = 0.0;
 };
 
 // Writes `program` (the input's runs, each with its holes reordered): the
 // dialect's skeleton around them, or the input's own lines (keep_style).
-// Every hole keeps its cycle words or its Z moves; between holes the spindle
+// Every hole keeps its cycle words or its Z moves (GRBL and Marlin: canned
+// cycles written out as their moves, expand_cycle); between holes the spindle
 // travels at the highest plane the input travelled at between that run's
 // holes (G98 to it), or at R where the input did so throughout (G99).
 void write_drilling(std::ostream& out, const DrillingProgram& program, const DrillingWriteSettings& settings);

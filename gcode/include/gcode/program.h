@@ -18,7 +18,10 @@
 
 namespace gcode {
 
-enum class Dialect { Haas, Fanuc, LinuxCnc };
+// Haas, Fanuc and LinuxCNC drill with canned cycles and change tools with M6;
+// GRBL (1.1, grblHAL, FluidNC) and Marlin have neither: every hole is written
+// out as moves, and a tool change is a pause with a message to the operator.
+enum class Dialect { Haas, Fanuc, LinuxCnc, Grbl, Marlin };
 enum class Units { Mm, Inch };
 enum class Cycle { G81, G82, G83, G73 };
 
@@ -56,9 +59,16 @@ struct ProgramSettings {
   bool retract_to_r = true;    // G99 between holes (G98 on each tool's last hole); false: G98 always
   std::size_t resume_from = 1; // first hole (1-based program index) to drill
   std::optional<aco::Point2> home;  // XY to return to at the end (work coordinates)
+  // GRBL and Marlin only: seconds to wait after the spindle starts (neither
+  // control waits for it), and the feed Marlin's G0 moves run at (Marlin
+  // moves G0 at the last F given, so every G0 names it; 0: leave it out).
+  double spindle_start_s = 0.0;
+  double travel_feed_mm_min = 0.0;
 };
 
 const char* to_string(Dialect d);
+// False for GRBL and Marlin: no canned cycles, no M6, no G43, no G98/G99.
+bool has_canned_cycles(Dialect d);
 std::optional<Dialect> dialect_from_string(const std::string& name);
 const char* to_string(Cycle c);
 std::optional<Cycle> cycle_from_string(const std::string& name);

@@ -1,0 +1,42 @@
+// The built-in machine classes (`acodrill machines`, `--machine NAME`). Each
+// is the JSON a --machine FILE would hold, so `acodrill machines --show NAME`
+// prints a starting point for a profile of one's own; "sources" says where
+// every figure comes from.
+#include "app/plan.h"
+
+namespace app {
+
+const std::vector<MachineClass>& machine_classes() {
+  static const std::vector<MachineClass> classes = {
+      {"vf2", "HAAS VF-2-class vertical mill: 30 x 16 in table, 8100 rpm, tool changer (the default)",
+       R"json({
+  "name": "HAAS VF-2 class",
+  "dialect": "haas",
+  "rapid_xy_mm_min": 25400, "rapid_z_mm_min": 25400, "accel_mm_s2": 2500, "linear_rapids": false,
+  "tool_change_s": 4.2, "tool_changer": true, "max_rpm": 8100,
+  "x_min_mm": 0, "x_max_mm": 762, "y_min_mm": 0, "y_max_mm": 406,
+  "sources": [
+    "HAAS VF-2 specifications (haascnc.com): travels 30 x 16 x 20 in, rapids 1000 in/min on X, Y and Z, spindle 8100 rpm, tool change 4.2 s chip to chip (average)",
+    "HAAS G00 moves each axis at its own rate (dogleg): HAAS mill operator's manual, G00 rapid motion",
+    "accel_mm_s2: our estimate; HAAS publishes no figure"
+  ]
+})json"},
+      {"router", "desktop CNC router on GRBL (Shapeoko 3 class): 425 x 465 mm, 10000 rpm, no tool changer",
+       R"json({
+  "name": "Desktop router (GRBL, Shapeoko 3 class)",
+  "dialect": "grbl",
+  "rapid_xy_mm_min": 5000, "rapid_z_mm_min": 5000, "accel_mm_s2": 400, "linear_rapids": true,
+  "tool_change_s": 60, "tool_changer": false, "max_rpm": 10000, "spindle_start_s": 3,
+  "x_min_mm": 0, "x_max_mm": 425, "y_min_mm": 0, "y_max_mm": 465,
+  "sources": [
+    "GRBL 1.1h grbl/defaults.h, DEFAULTS_SHAPEOKO_3: max rate 5000 mm/min and acceleration 400 mm/s^2 on X, Y and Z ($110-$112, $120-$122), travel 425 x 465 x 80 mm ($130-$132), spindle max 10000 rpm ($30)",
+    "GRBL plans G0 as one straight move at the axes' rates (linear_rapids)",
+    "tool_change_s: a manual change at a pause: spindle stops, the operator swaps the bit, zeroes Z on the part and resumes; our estimate of 60 s",
+    "spindle_start_s: GRBL does not wait for the spindle to come to speed; 3 s covers a trim router's run-up (our estimate)"
+  ]
+})json"},
+  };
+  return classes;
+}
+
+}  // namespace app

@@ -1,0 +1,62 @@
+// Canned cycles written out as moves, for controls that have none (GRBL,
+// Marlin). The moves are the ones LinuxCNC's interpreter makes for each cycle
+// (../shared/gcode.md, section 3), so rs274 reads the expanded hole back to
+// the same position and depth as the cycle.
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+
+#include "gcode/drilling.h"
+
+namespace gcode {
+
+double dwell_seconds(std::string_view p, bool canned_cycle) {
+  double v = 0.0;
+  auto r = std::from_chars(p.data(), p.data() + p.size(), v);
+  if (r.ec != std::errc() || !std::isfinite(v) || v < 0) return 0.0;
+  if (p.find('.') != std::string_view::npos) return v;
+  return canned_cycle || v >= 100.0 ? v / 1000.0 : v;
+}
+
+std::vector<ZMove> expand_cycle(const HoleCycle& c, double retract_z_mm, std::uint32_t line) {
+  constexpr double kPeckClearance = 0.254;  // LinuxCNC's G83/G73 clearance: 0.010 in
+  auto rapid = [](double z) { return ZMove{ZMove::Rapid, z, 0.0, "", 0.0}; };
+  auto feed = [&](double z) { return ZMove{ZMove::Feed, z, c.feed_mm_min, "", 0.0}; };
+  auto dwell = [&]() { return ZMove{ZMove::Dwell, 0.0, 0.0, c.p, dwell_seconds(c.p, true)}; };
+  std::vector<ZMove> m{rapid(c.r_mm)};
+  const bool pecks = (c.code == 83 || c.code == 73) && c.q_mm && *c.q_mm > 0;
+  switch (c.code) {
+    case 81: case 82: case 83: case 73:
+      if (pecks) {
+        double reached = c.r_mm;
+        while (reached > c.z_mm + 1e-9) {
+          const double next = std::max(c.z_mm, reached - *c.q_mm);
+          if (reached < c.r_mm) {
+            // Back to just above the depth already cut: G83 from R, G73 from where it backed off.
+            if (c.code == 83) m.push_back(rapid(c.r_mm));
+            m.push_back(rapid(reached + kPeckClearance));
+          }
+          m.push_back(feed(next));
+          reached = next;
+        }
+      } else {
+        m.push_back(feed(c.z_mm));
+      }
+      if (c.code == 82 && !c.p.empty()) m.push_back(dwell());
+      m.push_back(rapid(retract_z_mm));
+      return m;
+    case 85: case 89:
+      m.push_back(feed(c.z_mm));
+      if (c.code == 89 && !c.p.empty()) m.push_back(dwell());
+      m.push_back(feed(c.r_mm));
+      if (retract_z_mm > c.r_mm) m.push_back(rapid(retract_z_mm));
+      return m;
+    default:
+      throw ProgramError(line, "G" + std::to_string(c.code) +
+                                   (c.code == 84 || c.code == 74 ? " (tapping)" : "") +
+                                   " cannot be written as moves for a control without canned cycles; "
+                                   "choose --dialect haas, fanuc or linuxcnc, or --keep-style");
+  }
+}
+
+}  // namespace gcode

@@ -1,0 +1,151 @@
+#include "hobby_writer.h"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace gcode {
+
+namespace {
+
+constexpr double kMmPerInch = 25.4;
+// GRBL's line buffer holds 80 characters (protocol.h, LINE_BUFFER_SIZE);
+// comments do not count there, but some senders cut long lines: keep every
+// line under it.
+constexpr std::size_t kMaxLine = 78;
+
+std::string rpm_text(double rpm) {
+  const std::string s = format_number(std::round(rpm), 0);
+  return s.substr(0, s.size() - 1);  // "12000." -> "12000"
+}
+
+}  // namespace
+
+HobbyWriter::HobbyWriter(std::ostream& out, Dialect dialect, bool inch, int decimals, double travel_feed_mm_min)
+    : out_(out), dialect_(dialect), inch_(inch), decimals_(decimals), travel_feed_(travel_feed_mm_min) {}
+
+std::string HobbyWriter::n(double mm) const { return format_number(inch_ ? mm / kMmPerInch : mm, decimals_); }
+
+std::string HobbyWriter::f(double mm_min) const {
+  return format_number(inch_ ? mm_min / kMmPerInch : mm_min, inch_ ? 3 : 1);
+}
+
+void HobbyWriter::line(const std::string& text) { out_ << text << '\n'; }
+
+void HobbyWriter::comment(const std::string& text) {
+  std::string t = comment_text(text);
+  if (dialect_ == Dialect::Marlin) {
+    for (char& c : t) c = c == ';' ? ',' : c;
+    line(("; " + t).substr(0, kMaxLine));
+  } else {
+    line("(" + t.substr(0, kMaxLine - 2) + ")");
+  }
+}
+
+void HobbyWriter::start() {
+  line(std::string(inch_ ? "G20" : "G21") + " G90" + (dialect_ == Dialect::Grbl ? " G94 G17" : ""));
+}
+
+void HobbyWriter::work_offset(int g) {
+  if (g != 54) line("G" + std::to_string(g));
+}
+
+void HobbyWriter::pause_for(const std::string& message, double clear_z_mm) {
+  spindle_off();
+  if (coolant_) coolant_off();
+  rapid_z(clear_z_mm);
+  std::string t = comment_text(message);
+  if (dialect_ == Dialect::Marlin) {
+    for (char& c : t) c = c == ';' ? ',' : c;
+    line(("M0 " + t).substr(0, kMaxLine));
+  } else {
+    line("(MSG, " + t.substr(0, kMaxLine - 7) + ")");
+    line("M0");
+  }
+}
+
+void HobbyWriter::select_tool(int tool) {
+  // GRBL takes T0..T255 and does nothing with it; readers (verify, LinuxCNC)
+  // learn the tool from it. Marlin's T selects an extruder.
+  if (dialect_ == Dialect::Grbl && tool > 0 && tool <= 255) line("T" + std::to_string(tool));
+}
+
+void HobbyWriter::spindle_on(int direction, double rpm, double start_s) {
+  line(std::string(direction == 4 ? "M4" : "M3") + (rpm > 0 ? " S" + rpm_text(rpm) : std::string()));
+  spindle_ = true;
+  if (start_s > 0) dwell(start_s);
+}
+
+void HobbyWriter::dwell(double seconds) {
+  // GRBL's P is seconds; Marlin's P is milliseconds (its S, seconds, is not RS274).
+  if (dialect_ == Dialect::Marlin) line("G4 P" + std::to_string(std::llround(seconds * 1000.0)));
+  else line("G4 P" + format_number(seconds, 3));
+}
+
+void HobbyWriter::spindle_off() {
+  if (!spindle_) return;
+  line("M5");
+  spindle_ = false;
+}
+
+void HobbyWriter::coolant_on() {
+  if (dialect_ != Dialect::Grbl) return;  // Marlin: only with COOLANT_FLOOD built in; left to the operator
+  line("M8");
+  coolant_ = true;
+}
+
+void HobbyWriter::coolant_off() {
+  if (!coolant_) return;
+  line("M9");
+  coolant_ = false;
+}
+
+void HobbyWriter::rapid_z(double z_mm) {
+  if (z_ && std::fabs(*z_ - z_mm) <= 1e-9) return;
+  std::string text = "G0 Z" + n(z_mm);
+  if (dialect_ == Dialect::Marlin && travel_feed_ > 0) text += " F" + f(travel_feed_);
+  line(text);
+  if (dialect_ == Dialect::Marlin && travel_feed_ > 0) feed_ = travel_feed_;
+  z_ = z_mm;
+}
+
+void HobbyWriter::hole(aco::Point2 at, const std::vector<ZMove>& moves, double travel_z_mm) {
+  if (!(travel_z_mm > 1e-9)) {
+    throw std::invalid_argument("the spindle would travel between holes at Z" + n(travel_z_mm) +
+                                ", at or below the top of the part");
+  }
+  if (!z_ || *z_ < travel_z_mm - 1e-9) rapid_z(travel_z_mm);
+  std::string xy = "G0 X" + n(at.x) + " Y" + n(at.y);
+  if (dialect_ == Dialect::Marlin && travel_feed_ > 0) {
+    xy += " F" + f(travel_feed_);
+    feed_ = travel_feed_;
+  }
+  line(xy);
+  for (const ZMove& m : moves) {
+    switch (m.kind) {
+      case ZMove::Rapid: rapid_z(m.z_mm); break;
+      case ZMove::Feed: {
+        std::string text = "G1 Z" + n(m.z_mm);
+        if (!feed_ || std::fabs(*feed_ - m.feed_mm_min) > 1e-9) text += " F" + f(m.feed_mm_min);
+        feed_ = m.feed_mm_min;
+        line(text);
+        z_ = m.z_mm;
+        break;
+      }
+      case ZMove::Dwell: dwell(m.dwell_s); break;
+    }
+  }
+}
+
+void HobbyWriter::end(double clear_z_mm, std::optional<aco::Point2> home) {
+  spindle_off();
+  coolant_off();
+  rapid_z(clear_z_mm);
+  if (home) {
+    std::string xy = "G0 X" + n(home->x) + " Y" + n(home->y);
+    if (dialect_ == Dialect::Marlin && travel_feed_ > 0) xy += " F" + f(travel_feed_);
+    line(xy);
+  }
+  if (dialect_ == Dialect::Grbl) line("M2");
+}
+
+}  // namespace gcode

@@ -1,0 +1,66 @@
+#pragma once
+// The lines of a program for a control without canned cycles, tool changer
+// or length offsets: GRBL 1.1 (also grblHAL, FluidNC) and Marlin. Both the
+// planner's emitter and the reordered-program writer write through it, so the
+// two rules that keep such a machine safe live in one place: the spindle
+// never moves in X/Y until it is known to be above the part (Z > 0), and a
+// tool change is a pause that tells the operator which drill to put in and
+// to zero Z on it again (nothing measures its length).
+//
+// Only words both controls accept are written: G0 G1 G4 G17 G20 G21 G90 G94
+// G54-G59, M0 M2 M3 M4 M5 M8 M9, T (GRBL keeps it and does nothing), F and S.
+// GRBL (doc/markdown/commands.md) refuses G81-G89, G43 H, G98/G99, M6, M7
+// and '%'; Marlin has no T for a spindle (it selects an extruder), no M2/M30
+// (M30 deletes a file on its SD card), reads comments after ';' only, shows
+// `M0 text` on its screen, and runs G0 at the last F given.
+#include <optional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "aco/geometry.h"
+#include "gcode/drilling.h"
+
+namespace gcode {
+
+class HobbyWriter {
+ public:
+  // `decimals`: of lengths in program units; `travel_feed_mm_min`: Marlin's G0 feed (0: none given).
+  HobbyWriter(std::ostream& out, Dialect dialect, bool inch, int decimals, double travel_feed_mm_min);
+
+  void comment(const std::string& text);
+  void start();                                 // units, absolute, plane
+  void work_offset(int g);                      // G54..G59 (G54 is the default: not written)
+  // Spindle off, up to `clear_z`, the message, the pause (M0). GRBL senders
+  // show "(MSG, ...)" before the M0; Marlin shows "M0 text" on its screen.
+  void pause_for(const std::string& message, double clear_z_mm);
+  void select_tool(int tool);                   // GRBL: T<n>; Marlin: none
+  void spindle_on(int direction, double rpm, double start_s);  // M3/M4 S, then a dwell while it comes to speed
+  void spindle_off();
+  void coolant_on();                            // M8 (GRBL has no M7 unless built with it)
+  void coolant_off();
+  void rapid_z(double z_mm);
+  // Over a hole: up to at least `travel_z_mm` where lower (or not known), a
+  // rapid to X Y, then the hole's moves. Throws std::invalid_argument for a
+  // travel plane at or below the top of the part (Z 0).
+  void hole(aco::Point2 at, const std::vector<ZMove>& moves, double travel_z_mm);
+  // Spindle off, up to `clear_z`, to `home` if given, and the end (M2 on GRBL).
+  void end(double clear_z_mm, std::optional<aco::Point2> home);
+
+ private:
+  std::string n(double mm) const;
+  std::string f(double mm_min) const;
+  void line(const std::string& text);
+  void dwell(double seconds);
+
+  std::ostream& out_;
+  Dialect dialect_;
+  bool inch_;
+  int decimals_;
+  double travel_feed_;
+  std::optional<double> z_;      // where the spindle is (program Z, mm); nullopt: not known
+  std::optional<double> feed_;   // the F in force
+  bool spindle_ = false, coolant_ = false;
+};
+
+}  // namespace gcode
