@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <regex>
+#include <set>
 #include <nlohmann/json.hpp>
 
 #include "gcode/interpreter.h"
@@ -356,4 +358,91 @@ TEST(cli_test, machine_classes_are_listed_and_change_the_plan) {
   auto unknown = acodrill_run("machines --show bridgeport");
   EXPECT_EQ(unknown.code, 2);
   EXPECT_THAT(unknown.err, ::testing::HasSubstr("built in: vf2, router"));
+}
+
+// Issue 25: time as the machine spends it. On real boards, with the PCB
+// drilling class and the VF-2 class, the report splits each order's time into
+// moves, drilling, tool changes and pauses that add up to the total; only the
+// moves depend on the route, so the time saved is the moving time saved.
+TEST(cli_test, time_split_adds_up_and_the_route_changes_only_the_moves) {
+  TempDir t;
+  const std::vector<std::string> boards = {data("real-excellon/altium_pic18f14k50_inch_lz_pth_npth.txt"),
+                                           data("real-excellon/eagle_arduino_uno_inch_tz.drd"),
+                                           data("kicad/kit-dev-coldfire-xilinx_5213-mm-decimal.drl")};
+  for (const std::string& board : boards) {
+    for (const char* machine : {"pcb-drill", "vf2", "router"}) {
+      const std::string what = board + " " + machine;
+      auto r = acodrill_run("plan " + q(board) + " -o " + q(t / "p.nc") + " --report " + q(t / "r.json") +
+                            " -q --iterations 30 --slots skip --batch 20 --machine " + machine);
+      ASSERT_EQ(r.code, 0) << what << ": " << r.err;
+      const auto j = nlohmann::json::parse(slurp(t / "r.json"));
+      double moves[2] = {0, 0};
+      int k = 0;
+      for (const char* order : {"input_order", "optimized"}) {
+        const auto& s = j["time_split_s"][order];
+        const double sum = s["moves"].get<double>() + s["drilling"].get<double>() + s["tool_changes"].get<double>() +
+                           s["pauses"].get<double>();
+        EXPECT_NEAR(sum, j["machining_time_s"][order].get<double>(), 1e-5) << what << " " << order;
+        moves[k++] = s["moves"].get<double>();
+      }
+      EXPECT_LE(moves[1], moves[0] + 1e-9) << what;
+      for (const char* part : {"drilling", "tool_changes", "pauses"}) {
+        EXPECT_NEAR(j["time_split_s"]["input_order"][part].get<double>(), j["time_split_s"]["optimized"][part].get<double>(), 1e-6)
+            << what << " " << part;
+      }
+      const double saved = j["machining_time_s"]["input_order"].get<double>() - j["machining_time_s"]["optimized"].get<double>();
+      EXPECT_NEAR(saved, moves[0] - moves[1], 1e-5) << what;
+      EXPECT_NEAR(j["batch"]["time_s"]["optimized"].get<double>(), 20 * j["machining_time_s"]["optimized"].get<double>(), 1e-3);
+      EXPECT_EQ(j["batch"]["panels"].get<int>(), 20);
+    }
+  }
+}
+
+// Several inputs: holes of one diameter share a tool unless the files are
+// kept apart; a hole in both files is drilled once.
+TEST(cli_test, several_inputs_share_tools_unless_kept_apart) {
+  TempDir t;
+  spit(t / "a.csv", "x,y,d\n0,0,1.0\n10,0,1.0\n20,0,0.8\n");
+  spit(t / "b.csv", "x,y,d\n0,10,1.0\n10,10,1.0\n20,0,0.8\n");
+  auto shared = acodrill_run("plan " + q(t / "a.csv") + " " + q(t / "b.csv") + " -o " + q(t / "s.nc") + " --report " +
+                             q(t / "s.json") + " -q --iterations 10");
+  ASSERT_EQ(shared.code, 0) << shared.err;
+  auto j = nlohmann::json::parse(slurp(t / "s.json"));
+  EXPECT_EQ(j["holes"].get<int>(), 5) << "(20, 0) D0.8 is in both files";
+  EXPECT_EQ(j["tools"].size(), 2u);
+  EXPECT_EQ(j["sources"][0]["holes"].get<int>(), 3);
+  EXPECT_EQ(j["sources"][1]["holes"].get<int>(), 2);
+  auto apart = acodrill_run("plan " + q(t / "a.csv") + " " + q(t / "b.csv") + " -o " + q(t / "k.nc") + " --report " +
+                            q(t / "k.json") + " -q --iterations 10 --keep-files-apart");
+  ASSERT_EQ(apart.code, 0) << apart.err;
+  j = nlohmann::json::parse(slurp(t / "k.json"));
+  ASSERT_EQ(j["tools"].size(), 3u) << "a.csv: D0.8 and D1.0; b.csv: D1.0";
+  EXPECT_EQ(j["tools"][2]["diameter_mm"].get<double>(), 1.0);
+  EXPECT_EQ(j["tools"][2]["holes"].get<int>(), 2);
+  auto v = acodrill_run("verify " + q(t / "k.nc") + " --holes " + q(t / "a.csv") + " " + q(t / "b.csv") + " -q");
+  EXPECT_EQ(v.code, 0) << v.out;
+  // A program is reordered alone.
+  auto mixed = acodrill_run("plan " + q(t / "a.csv") + " " + q(data("real-gcode/pcb2gcode_D1MiniGSR.drill.ngc")) + " -o " +
+                            q(t / "m.nc"));
+  EXPECT_EQ(mixed.code, 2);
+  EXPECT_THAT(mixed.err, ::testing::HasSubstr("a drilling program is reordered on its own"));
+}
+
+// Pictures a shop reads at a glance: a 14-tool job gives every tool its own colour.
+TEST(cli_test, every_tool_has_its_own_colour) {
+  TempDir t;
+  const std::string dir = data("real-gerber/kicad/pic_programmer/x2_mm46/");
+  auto r = acodrill_run("plan " + q(dir + "pic_programmer-PTH-drl.gbr") + " " + q(dir + "pic_programmer-NPTH-drl.gbr") + " -o " +
+                        q(t / "p.nc") + " --svg " + q(t / "p.svg") + " -q --iterations 10 --slots skip");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::string svg = slurp(t / "p.svg");
+  std::set<std::string> fills;
+  std::size_t legend = 0;
+  static const std::regex entry(R"re(<rect x="[^"]+" y="[^"]+" width="12" height="12" fill="(#[0-9A-Fa-f]{6})"/><text[^>]*>T)re");
+  for (std::sregex_iterator it(svg.begin(), svg.end(), entry), end; it != end; ++it) {
+    fills.insert((*it)[1].str());
+    ++legend;
+  }
+  EXPECT_EQ(legend, 14u);
+  EXPECT_EQ(fills.size(), legend) << "two tools share a colour";
 }

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <filesystem>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <regex>
 #include <set>
 #include <sstream>
@@ -619,4 +620,118 @@ TEST(linuxcnc_test, hobby_programs_say_what_they_are) {
   auto h = testutil::acodrill_run("holes " + testutil::shell_quote(sdr));
   EXPECT_EQ(testutil::count_lines(h.out), 722) << "header and 721 positions";
   EXPECT_THAT(h.err, ::testing::HasSubstr("721 holes from g-code program, 1 duplicates removed"));
+}
+
+// Issue 25: the PCB shop's job. KiCad writes plated and non-plated holes to
+// two files; planned together they make one program that rs274 reads back to
+// every hole of both, once; verify takes the same list.
+TEST(linuxcnc_test, plated_and_non_plated_files_are_one_program) {
+  ASSERT_TRUE(have_rs274());
+  testutil::TempDir t;
+  const std::string dir = testutil::data("real-gerber/kicad/pic_programmer/x2_mm46/");
+  const std::string pth = dir + "pic_programmer-PTH-drl.gbr", npth = dir + "pic_programmer-NPTH-drl.gbr";
+  // The union of both files' own hole lists (read independently of acodrill).
+  const std::string a = testutil::slurp(pth + ".holes.csv"), b = testutil::slurp(npth + ".holes.csv");
+  testutil::spit(t / "both.csv", a + b.substr(b.find('\n') + 1));
+  const std::size_t both = testutil::read_holes_csv(testutil::slurp(t / "both.csv")).size();
+  const std::string list = testutil::shell_quote(pth) + " " + testutil::shell_quote(npth);
+  auto r = testutil::acodrill_run("plan " + list + " -o " + testutil::shell_quote(t / "p.nc") + " --report " +
+                                  testutil::shell_quote(t / "r.json") + " -q --iterations 20 --slots skip --dialect linuxcnc");
+  ASSERT_EQ(r.code, 0) << r.err;
+  check_program(t / "p.nc", pth, false, "PTH + NPTH", t / "both.csv");
+  const std::string report = testutil::slurp(t / "r.json");
+  EXPECT_THAT(report, ::testing::HasSubstr("\"holes\": " + std::to_string(both)));
+  EXPECT_THAT(report, ::testing::ContainsRegex("\"sources\": \\[\\s*\\{\\s*\"file\": \"[^\"]*PTH-drl.gbr\",\\s*\"holes\": " +
+                                               std::to_string(testutil::read_holes_csv(a).size())));
+  auto v = testutil::acodrill_run("verify " + testutil::shell_quote(t / "p.nc") + " --holes " + list + " -q --slots skip");
+  EXPECT_EQ(v.code, 0) << v.out;
+  // One file alone is not what the program drills.
+  auto v1 = testutil::acodrill_run("verify " + testutil::shell_quote(t / "p.nc") + " --holes " + testutil::shell_quote(pth) +
+                                   " -q --slots skip");
+  EXPECT_EQ(v1.code, 1) << v1.out;
+}
+
+// A 3x2 panel drills six copies at the pitch, each tool across the whole
+// panel; its route is shorter than six copies of the one-board route joined
+// end to end. With max_hits, no physical drill (counted from the program as
+// rs274 runs it) makes more holes than its life, and every hole is made once.
+TEST(linuxcnc_test, panels_and_drills_that_wear_out) {
+  ASSERT_TRUE(have_rs274());
+  testutil::TempDir t;
+  const std::string board = testutil::data("kicad/StickHub-mm-decimal.drl");
+  const aco::HoleSet one = testutil::read_holes_csv(testutil::slurp(testutil::data("kicad/StickHub.holes.csv")));
+  // The expected panel, made here: copy (c, r) moved by (c*60, r*40).
+  std::string csv = "x_mm,y_mm,diameter_mm\n";
+  for (int r = 0; r < 2; ++r) {
+    for (int c = 0; c < 3; ++c) {
+      for (const aco::Hole& h : one) {
+        csv += std::to_string(h.center.x + 60.0 * c) + "," + std::to_string(h.center.y + 40.0 * r) + "," +
+               std::to_string(h.diameter) + "\n";
+      }
+    }
+  }
+  testutil::spit(t / "panel.csv", csv);
+  const std::string common = " -q --iterations 300 --slots skip --dialect linuxcnc --seed 3";
+  auto single = testutil::acodrill_run("plan " + testutil::shell_quote(board) + " -o " + testutil::shell_quote(t / "one.nc") +
+                                       " --report " + testutil::shell_quote(t / "one.json") + common);
+  ASSERT_EQ(single.code, 0) << single.err;
+  auto panel = testutil::acodrill_run("plan " + testutil::shell_quote(board) + " -o " + testutil::shell_quote(t / "six.nc") +
+                                      " --report " + testutil::shell_quote(t / "six.json") + " --panel 3x2 --pitch 60,40" + common);
+  ASSERT_EQ(panel.code, 0) << panel.err;
+  check_program(t / "six.nc", board, false, "3x2 panel", t / "panel.csv");
+  // Six copies of the one-board route joined end to end, tool by tool, from the start and back to it.
+  const gcode::Interpretation route = gcode::interpret(testutil::slurp(t / "one.nc"));
+  std::map<int, std::vector<aco::Point2>> by_tool;
+  std::vector<int> tool_order;
+  for (const gcode::DrilledHole& h : route.holes) {
+    if (!by_tool.count(h.tool)) tool_order.push_back(h.tool);
+    by_tool[h.tool].push_back({h.x_mm, h.y_mm});
+  }
+  double joined = 0;
+  aco::Point2 at{0, 0};
+  for (int tool : tool_order) {
+    for (int r = 0; r < 2; ++r) {
+      for (int c = 0; c < 3; ++c) {
+        for (const aco::Point2& p : by_tool[tool]) {
+          const aco::Point2 q{p.x + 60.0 * c, p.y + 40.0 * r};
+          joined += aco::euclidean(at, q);
+          at = q;
+        }
+      }
+    }
+  }
+  joined += aco::euclidean(at, {0, 0});
+  const double six = nlohmann::json::parse(testutil::slurp(t / "six.json"))["travel_mm"]["optimized"].get<double>();
+  std::printf("3x2 panel of StickHub: whole-panel route %.1f mm, six one-board routes joined %.1f mm (%.1f %% shorter)\n",
+              six, joined, 100.0 * (joined - six) / joined);
+  EXPECT_LT(six, joined);
+  auto v = testutil::acodrill_run("verify " + testutil::shell_quote(t / "six.nc") + " --holes " + testutil::shell_quote(board) +
+                                  " --panel 3x2 --pitch 60,40 -q --slots skip");
+  EXPECT_EQ(v.code, 0) << v.out;
+
+  // Drills that wear out: 100 hits for the 0.3 mm drill, which makes 486 holes here.
+  testutil::spit(t / "tools.json", R"({"tools": [
+    {"number": 1, "diameter_mm": 0.3, "rpm": 8000, "feed_mm_min": 200, "depth_mm": -2.2, "max_hits": 100},
+    {"number": 2, "diameter_mm": 0.4, "rpm": 8000, "feed_mm_min": 200, "depth_mm": -2.2, "max_hits": 30}]})");
+  auto worn = testutil::acodrill_run("plan " + testutil::shell_quote(board) + " -o " + testutil::shell_quote(t / "worn.nc") +
+                                     " --report " + testutil::shell_quote(t / "worn.json") + " --panel 3x2 --pitch 60,40 --tools " +
+                                     testutil::shell_quote(t / "tools.json") + common);
+  ASSERT_EQ(worn.code, 0) << worn.err;
+  check_program(t / "worn.nc", board, false, "sister tools", t / "panel.csv");
+  const CanonRun canon = run_rs274(testutil::slurp(t / "worn.nc"), 1.0, "sister tools");
+  std::map<int, int> hits;
+  for (const auto& h : canon.holes) ++hits[h.tool];
+  const auto drills = nlohmann::json::parse(testutil::slurp(t / "worn.json"))["drills"];
+  std::size_t total = 0;
+  for (const auto& d : drills) {
+    const int tool = d["tool"].get<int>();
+    EXPECT_EQ(hits[tool], d["hits"].get<int>()) << "T" << tool;
+    EXPECT_LE(hits[tool], d["max_hits"].get<int>()) << "T" << tool << " drills past its life";
+    total += d["hits"].get<std::size_t>();
+  }
+  EXPECT_EQ(total, one.size() * 6);
+  EXPECT_EQ(drills.size(), 5u + 2u) << "486 holes at 100 a drill: T1 and four sisters; 36 at 30: T2 and one sister";
+  auto vw = testutil::acodrill_run("verify " + testutil::shell_quote(t / "worn.nc") + " --holes " + testutil::shell_quote(board) +
+                                   " --panel 3x2 --pitch 60,40 -q --slots skip");
+  EXPECT_EQ(vw.code, 0) << vw.out;
 }

@@ -8,6 +8,7 @@
 #include <CLI/CLI.hpp>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <sstream>
 
@@ -190,6 +191,14 @@ std::string format_minutes(double seconds) {
   return gcode::format_number(seconds / 60.0, 2) + " min";
 }
 
+// --panel and --pitch, as plan and verify take them.
+std::vector<app::PanelCopy> panel_copies(const std::string& panel, const std::string& pitch) {
+  if (!pitch.empty() && panel.empty()) throw app::UserError("--pitch goes with --panel COLSxROWS");
+  const bool file = panel.find_first_of("/.") != std::string::npos || std::filesystem::exists(panel);
+  if (file && !pitch.empty()) throw app::UserError("--pitch goes with --panel COLSxROWS, not with a panel file");
+  return file ? app::load_panel(panel) : app::panel_grid(panel, pitch);
+}
+
 int cmd_holes(const std::string& input, const InputArgs& in_args, const std::string& format, bool quiet) {
   if (format != "csv") throw app::UserError("--format must be csv");
   app::LoadedHoles loaded = app::load_holes(input, to_input_options(in_args));
@@ -206,6 +215,10 @@ int cmd_holes(const std::string& input, const InputArgs& in_args, const std::str
 }
 
 struct PlanArgs {
+  std::vector<std::string> inputs;  // one job; `input` is the first
+  bool keep_files_apart = false;
+  std::string panel, pitch;
+  std::size_t batch = 1;
   std::string input, output, report, svg, svg_compare, convergence, excellon, gerber, setup_sheet;
   std::string dialect, units, tools, machine, material, objective = "distance", origin;
   bool keep_style = false;
@@ -219,7 +232,8 @@ struct PlanArgs {
 // Writes the program and every asked-for output (each complete or not at
 // all), then the summary on stderr.
 int finish_plan(const PlanArgs& a, const std::string& program_text, const aco::HoleSet& holes, const app::PlanResult& plan,
-                const app::PlanOptions& o, const app::ReportContext& ctx, const std::vector<gcode::ToolPass>& passes) {
+                const app::PlanOptions& o, const app::ReportContext& ctx, const std::vector<gcode::ToolPass>& passes,
+                const app::Job* job = nullptr) {
   const app::LoadedHoles& loaded = *ctx.input;
   const app::Placement& placement = ctx.placement;
   const std::size_t n_tools = plan.groups.size();
@@ -244,7 +258,18 @@ int finish_plan(const PlanArgs& a, const std::string& program_text, const aco::H
   }
 
   if (!a.quiet) {
-    print_warnings(loaded, a.input, a.quiet);
+    if (job) {
+      for (std::size_t k = 0; k < job->parts.size(); ++k) {
+        app::LoadedHoles part = job->parts[k];
+        part.holes.resize(job->sources[k].holes);  // the count the summary gives: what this file adds to the job
+        print_warnings(part, job->sources[k].file, a.quiet);
+      }
+      if (job->parts.size() > 1 && loaded.duplicates_removed) {
+        std::fprintf(stderr, "acodrill: %zu hole(s) in more than one input drilled once\n", loaded.duplicates_removed);
+      }
+    } else {
+      print_warnings(loaded, a.input, a.quiet);
+    }
     const auto& in = plan.input_order;
     const auto& nn = plan.nearest_neighbor;
     const auto& op = plan.optimized;
@@ -259,6 +284,12 @@ int finish_plan(const PlanArgs& a, const std::string& program_text, const aco::H
                  in.time_s / 60);
     std::fprintf(stderr, "  %-18s %12.1f %12.2f\n", "nearest neighbour", nn.travel_mm, nn.time_s / 60);
     std::fprintf(stderr, "  %-18s %12.1f %12.2f\n", "optimized", op.travel_mm, op.time_s / 60);
+    // Where the time goes: the route changes only the moves.
+    std::fprintf(stderr, "  %-18s %12s %12s %12s %12s\n", "time split min", "moves", "drilling", "tool changes", "pauses");
+    for (const auto& [label, st] : {std::pair{ctx.program_input ? "input program" : "input order", &in}, {"optimized", &op}}) {
+      std::fprintf(stderr, "  %-18s %12.2f %12.2f %12.2f %12.2f\n", label, st->split.moves_s / 60, st->split.drilling_s / 60,
+                   st->split.tool_changes_s / 60, st->split.pauses_s / 60);
+    }
     if (ctx.program_input && ctx.program_input->overlapping_holes) {
       std::fprintf(stderr, "  %zu overlapping holes (%zu groups) drilled together in their input order\n",
                    ctx.program_input->overlapping_holes, ctx.program_input->overlap_groups);
@@ -362,17 +393,17 @@ int plan_program(const PlanArgs& a, app::PlanOptions o, const app::LoadedHoles& 
   app::Placement placement;
   placement.origin = app::Origin{app::OriginKind::Drawing, {}};
   placement.extent = app::extent_of(r.holes);
-  app::ReportContext ctx{source, a.output, placement, loaded.name, &loaded, std::nullopt};
+  app::ReportContext ctx{source, a.output, placement, loaded.name, &loaded, {}, 1, 1, std::nullopt};
   ctx.program_input = app::ReportContext::ProgramInput{r.plan.groups.size(), r.overlapping_holes, r.overlap_groups,
                                                        a.keep_style ? "keep" : "dialect"};
   return finish_plan(a, program.str(), r.holes, r.plan, o, ctx, app::to_passes(r.holes, r.plan, o.machine));
 }
 
 int cmd_plan(const PlanArgs& a, const SolverArgs& s, const InputArgs& in_args) {
-  // Refuse to overwrite the input with the program before doing any work.
+  // Refuse to overwrite an input with the program before doing any work.
   for (const std::string* out : {&a.output, &a.report, &a.svg, &a.svg_compare, &a.convergence, &a.excellon, &a.gerber, &a.setup_sheet}) {
-    if (!out->empty() && app::same_file(a.input, *out)) {
-      throw app::UserError(*out, 0, "output would overwrite the input file");
+    for (const std::string& input : a.inputs) {
+      if (!out->empty() && app::same_file(input, *out)) throw app::UserError(*out, 0, "output would overwrite the input file " + input);
     }
   }
   app::PlanOptions o;
@@ -408,17 +439,24 @@ int cmd_plan(const PlanArgs& a, const SolverArgs& s, const InputArgs& in_args) {
   else throw app::UserError("--objective must be distance or time (got \"" + a.objective + "\")");
   if (!a.tools.empty()) o.tools = app::load_tool_table(a.tools);
 
-  app::LoadedHoles loaded = app::load_holes(a.input, to_input_options(in_args));
+  app::Job job = app::load_job(a.inputs, to_input_options(in_args));
+  app::LoadedHoles& loaded = job.holes;
   if (loaded.program) return plan_program(a, o, loaded, in_args);
   if (a.keep_style || a.min_spacing > 0) {
     throw app::UserError("--keep-style and --min-spacing apply to a drilling program input (G-code)");
   }
+  o.hole_source = job.hole_source;
+  o.keep_sources_apart = a.keep_files_apart;
   // PCB drill data is a circuit board unless the user says otherwise: PCB
   // feeds and speeds through a 1.6 mm board, not a quarter inch of steel.
-  const bool board = loaded.format == app::InputFormat::Excellon || loaded.format == app::InputFormat::Gerber;
+  const bool board = std::any_of(job.parts.begin(), job.parts.end(), [](const app::LoadedHoles& p) {
+    return p.format == app::InputFormat::Excellon || p.format == app::InputFormat::Gerber;
+  });
   if (a.material.empty() && board) o.material = app::Material::Pcb;
   o.thickness_mm = a.thickness.value_or(o.material == app::Material::Pcb ? 1.6 : 6.35);
   if (loaded.holes.empty()) throw app::UserError(a.input == "-" ? "<stdin>" : a.input, 0, "no holes to drill");
+  std::string source;  // the job's inputs, as messages and the program's header name them
+  for (const std::string& input : a.inputs) source += (source.empty() ? "" : " + ") + (input == "-" ? std::string("<stdin>") : input);
 
   const bool progress = !a.quiet && ::isatty(STDERR_FILENO);
   if (progress) {
@@ -427,8 +465,21 @@ int cmd_plan(const PlanArgs& a, const SolverArgs& s, const InputArgs& in_args) {
       std::fprintf(stderr, "\racodrill: iteration %d, %.1f s, best %.3f mm   ", p.iteration, p.wall_s, p.best_length);
     };
   }
-  const std::string source = a.input == "-" ? "<stdin>" : a.input;
-  const std::string source_name = source.substr(source.find_last_of('/') == std::string::npos ? 0 : source.find_last_of('/') + 1);
+  std::string source_name;
+  for (const std::string& input : a.inputs) {
+    source_name += (source_name.empty() ? "" : " + ") + input.substr(input.find_last_of('/') == std::string::npos ? 0 : input.find_last_of('/') + 1);
+  }
+  // A panel: every copy of the board, in drawing coordinates, before program zero is chosen on the whole.
+  std::size_t copies = 1;
+  if (!a.panel.empty()) {
+    const std::vector<app::PanelCopy> placements = panel_copies(a.panel, a.pitch);
+    copies = placements.size();
+    if (loaded.holes.size() * copies > in_args.max_holes) {
+      throw app::UserError("--panel: " + std::to_string(copies) + " copies of " + std::to_string(loaded.holes.size()) +
+                           " holes exceed the hole limit (--max-holes " + std::to_string(in_args.max_holes) + ")");
+    }
+    loaded.holes = app::panelize(loaded.holes, placements, o.hole_source);
+  }
   // Program zero where the machinist will set the work offset.
   if (a.default_diameter) app::fill_missing_diameters(loaded.holes, *a.default_diameter);
   const app::Placement placement = app::place_holes(loaded.holes, origin);
@@ -450,6 +501,10 @@ int cmd_plan(const PlanArgs& a, const SolverArgs& s, const InputArgs& in_args) {
           std::to_string(plan.solver.seed),
       app::origin_comment(placement, ps.units),
       app::zero_comment(placement)};
+  if (copies > 1) {
+    ps.header_comments.push_back("PANEL: " + std::to_string(copies) + " COPIES OF " + std::to_string(loaded.holes.size() / copies) +
+                                 " HOLES, EACH TOOL ACROSS THE WHOLE PANEL");
+  }
   if (loaded.slots_drilled) {
     ps.header_comments.push_back("SLOTS: " + std::to_string(loaded.slots_drilled) + " DRILLED AS " +
                                  std::to_string(loaded.slot_holes) + " HOLES");
@@ -471,8 +526,11 @@ int cmd_plan(const PlanArgs& a, const SolverArgs& s, const InputArgs& in_args) {
     throw app::UserError(e.what());
   }
 
-  app::ReportContext ctx{source, a.output, placement, loaded.name, &loaded, std::nullopt};
-  return finish_plan(a, program.str(), loaded.holes, plan, o, ctx, passes);
+  app::ReportContext ctx{source, a.output, placement, loaded.name, &loaded, {}, 1, 1, std::nullopt};
+  for (const app::Job::Source& src : job.sources) ctx.sources.push_back({src.file, src.holes});
+  ctx.panel_copies = copies;
+  ctx.batch = a.batch;
+  return finish_plan(a, program.str(), loaded.holes, plan, o, ctx, passes, &job);
 }
 
 int cmd_tsp(const std::string& input, const std::string& tour, const SolverArgs& s, bool quiet) {
@@ -508,8 +566,8 @@ int cmd_tsp(const std::string& input, const std::string& tour, const SolverArgs&
   return 0;
 }
 
-int cmd_verify(const std::string& program_path, const std::string& holes_path, const std::string& origin_text,
-               const InputArgs& in_args, bool quiet) {
+int cmd_verify(const std::string& program_path, const std::vector<std::string>& holes_paths, const std::string& origin_text,
+               const std::string& panel, const std::string& pitch, const InputArgs& in_args, bool quiet) {
   const std::string text = app::read_file(program_path);
   gcode::Interpretation run;
   try {
@@ -526,9 +584,14 @@ int cmd_verify(const std::string& program_path, const std::string& holes_path, c
                 d == run.tool_diameter_mm.end() ? "unknown" : gcode::format_number(d->second, 3).c_str());
   }
   std::printf("rapid_xy_mm %s\n", gcode::format_number(run.rapid_xy_mm, 3).c_str());
-  if (holes_path.empty()) return 0;
-
-  app::LoadedHoles expected = app::load_holes(holes_path, to_input_options(in_args));
+  if (holes_paths.empty()) return 0;
+  std::string holes_path;
+  for (const std::string& p : holes_paths) holes_path += (holes_path.empty() ? "" : " + ") + p;
+  app::LoadedHoles expected = app::load_job(holes_paths, to_input_options(in_args)).holes;
+  if (!panel.empty() || !pitch.empty()) {
+    std::vector<std::uint32_t> no_sources;
+    expected.holes = app::panelize(expected.holes, panel_copies(panel, pitch), no_sources);
+  }
   if (expected.program) {
     // Another program as the hole source: the same holes, tools and depths, where it put them.
     const std::vector<std::string> faults = app::check_same_holes(run, *expected.program);
@@ -613,7 +676,20 @@ int main(int argc, char** argv) {
       "                                                            another CAM's program, its holes reordered per tool\n"
       "Inputs: DXF, Excellon, Gerber (RS-274X/X2; RS-274D with --apertures), XML hole map, CSV (x,y,diameter mm),\n"
       "TSPLIB, a G-code drilling program (canned or expanded: its tools, cycles and depths are kept); '-' reads stdin.");
-  plan_cmd->add_option("input", plan.input, "Input file (DXF, Excellon, Gerber, XML, CSV, TSPLIB, G-code program) or - for stdin")->required();
+  plan_cmd->add_option("input", plan.inputs,
+                       "Input files, one job (DXF, Excellon, Gerber, XML, CSV, TSPLIB, any mix; holes of one diameter "
+                       "share a tool), or one G-code program to reorder; - reads stdin")
+      ->required();
+  plan_cmd->add_option("--panel", plan.panel,
+                       "Drill copies of the board as one job: COLSxROWS with --pitch DX,DY (copy (c,r) moved by "
+                       "(c*DX, r*DY) mm), or a panel file {\"copies\": [{\"x_mm\", \"y_mm\", \"rotate_deg\" 0|90|180|270, "
+                       "\"mirror\"}, ...]}. Each tool is routed across the whole panel, not board after board");
+  plan_cmd->add_option("--pitch", plan.pitch, "DX,DY in mm between panel copies (with --panel COLSxROWS)");
+  plan_cmd->add_option("--batch", plan.batch, "Report the time for N panels (or parts) run one after another (default 1)")
+      ->check(CLI::Range(std::size_t{1}, std::size_t{1000000}));
+  plan_cmd->add_flag("--keep-files-apart", plan.keep_files_apart,
+                     "Several inputs: each file's holes get tools of their own, drilled file after file (plated and "
+                     "non-plated holes at different steps of the process)");
   plan_cmd->add_option("-o,--output", plan.output, "Program to write (- = stdout)")->required();
   plan_cmd->add_option("--report", plan.report, "Write a JSON report: holes, tools, travel, time, solver");
   plan_cmd->add_option("--svg", plan.svg, "Write a picture of the route (SVG)");
@@ -679,16 +755,21 @@ int main(int argc, char** argv) {
   tsp_cmd->add_flag("-q,--quiet", quiet, "Print only the length");
   add_solver_options(tsp_cmd, tsp_solver);
 
-  std::string verify_program, verify_holes, verify_origin;
+  std::string verify_program, verify_origin, verify_panel, verify_pitch;
+  std::vector<std::string> verify_holes;
   InputArgs verify_in;
   auto* verify_cmd = cli.add_subcommand("verify", "Read a drilling program back: what it drills, with which tool");
   verify_cmd->footer("Exit 1 when --holes is given and a hole is missed, repeated, moved or drilled with the wrong tool.\n"
                      "Example:\n  acodrill verify plate.nc --holes plate.dxf");
   verify_cmd->add_option("program", verify_program, "G-code program")->required();
-  verify_cmd->add_option("--holes", verify_holes, "The input the program should drill");
+  verify_cmd->add_option("--holes", verify_holes,
+                         "The input(s) the program should drill: the same list as plan was given (--holes a.drl b.drl)")
+      ->expected(1, 1000);
   verify_cmd->add_option("--origin", verify_origin,
                          "Where the program's zero sits on the --holes input (as for plan); default: what the "
                          "program's header states, else the input's own coordinates");
+  verify_cmd->add_option("--panel", verify_panel, "The panel plan was given (COLSxROWS with --pitch, or a panel file)");
+  verify_cmd->add_option("--pitch", verify_pitch, "DX,DY in mm, with --panel COLSxROWS");
   verify_cmd->add_flag("-q,--quiet", quiet, "No summary on stderr");
   add_input_options(verify_cmd, verify_in);
 
@@ -724,10 +805,13 @@ int main(int argc, char** argv) {
   }
 
   try {
-    if (*plan_cmd) return cmd_plan(plan, solver, in_args);
+    if (*plan_cmd) {
+      plan.input = plan.inputs.front();
+      return cmd_plan(plan, solver, in_args);
+    }
     if (*holes_cmd) return cmd_holes(holes_input, holes_in, holes_format, quiet);
     if (*tsp_cmd) return cmd_tsp(tsp_input, tsp_tour, tsp_solver, quiet);
-    if (*verify_cmd) return cmd_verify(verify_program, verify_holes, verify_origin, verify_in, quiet);
+    if (*verify_cmd) return cmd_verify(verify_program, verify_holes, verify_origin, verify_panel, verify_pitch, verify_in, quiet);
     if (*machines_cmd) return cmd_machines(machines_show);
   } catch (const app::UserError& e) {
     std::cerr << "acodrill: error: " << e.where_what() << "\n";

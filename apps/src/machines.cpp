@@ -35,6 +35,19 @@ const std::vector<MachineClass>& machine_classes() {
     "spindle_start_s: GRBL does not wait for the spindle to come to speed; 3 s covers a trim router's run-up (our estimate)"
   ]
 })json"},
+      {"pcb-drill", "PCB drilling machine (LPKF ProtoMat S64 class): 60000 rpm carbide micro drills, 120 hits/min, 229 x 305 mm",
+       R"json({
+  "name": "PCB drilling machine (LPKF ProtoMat S64 class)",
+  "dialect": "haas",
+  "rapid_xy_mm_min": 9000, "rapid_z_mm_min": 9000, "accel_mm_s2": 1000, "linear_rapids": true,
+  "tool_change_s": 10, "tool_changer": true, "max_rpm": 60000, "hit_s": 0.5, "drills": "carbide",
+  "x_min_mm": 0, "x_max_mm": 229, "y_min_mm": 0, "y_max_mm": 305,
+  "sources": [
+    "LPKF ProtoMat S64 product data (lpkf.com): spindle up to 60000 rpm, drilling speed 120 holes/min (hit_s 0.5), travel speed up to 150 mm/s, working area 229 x 305 mm, automatic tool change with 15 positions",
+    "accel_mm_s2 and tool_change_s: our estimates; the maker publishes neither",
+    "drills: solid carbide micro drills; feeds per revolution from drill makers' PCB drilling charts (generate_tool_table)"
+  ]
+})json"},
   };
   return classes;
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <limits>
 #include <map>
@@ -76,6 +77,14 @@ Machine parse_machine(const std::string& text, const std::string& path) {
     m.tool_changer = j["tool_changer"].get<bool>();
   }
   m.spindle_start_s = json_number(j, "spindle_start_s", m.spindle_start_s, path);
+  m.hit_s = json_number(j, "hit_s", m.hit_s, path);
+  if (j.contains("drills")) {
+    if (!j["drills"].is_string() || (j["drills"] != "hss" && j["drills"] != "carbide")) {
+      throw UserError(path, 0, "\"drills\" must be \"hss\" or \"carbide\"");
+    }
+    m.drills = j["drills"].get<std::string>();
+  }
+  if (!(m.hit_s >= 0 && m.hit_s <= 600)) throw UserError(path, 0, "hit_s must be 0..600");
   if (!(m.spindle_start_s >= 0 && m.spindle_start_s <= 600)) throw UserError(path, 0, "spindle_start_s must be 0..600");
   m.rapid_xy_mm_min = json_number(j, "rapid_xy_mm_min", m.rapid_xy_mm_min, path);
   m.rapid_z_mm_min = json_number(j, "rapid_z_mm_min", m.rapid_z_mm_min, path);
@@ -155,6 +164,9 @@ ToolTable load_tool_table(const std::string& path) {
     tool.depth_mm = json_number(e, "depth_mm", -8, where);
     tool.peck_mm = json_number(e, "peck_mm", 0, where);
     tool.dwell_s = json_number(e, "dwell_s", 0, where);
+    const double hits = json_number(e, "max_hits", 0, where);
+    if (!(hits >= 0 && hits <= 1e9) || hits != std::floor(hits)) throw UserError(where, 0, "\"max_hits\" must be a whole number >= 0 (0: no limit)");
+    tool.max_hits = static_cast<int>(hits);
     if (e.contains("cycle")) {
       auto c = e["cycle"].is_string() ? gcode::cycle_from_string(e["cycle"].get<std::string>()) : std::nullopt;
       if (!c) throw UserError(where, 0, "\"cycle\" must be one of G81, G82, G83, G73");
@@ -175,7 +187,9 @@ ToolTable load_tool_table(const std::string& path) {
   return t;
 }
 
-ToolTable generate_tool_table(const aco::HoleSet& holes, Material material, double thickness_mm, int max_rpm) {
+ToolTable generate_tool_table(const aco::HoleSet& holes, Material material, double thickness_mm, const Machine& machine) {
+  const int max_rpm = machine.max_rpm;
+  const bool carbide = machine.drills == "carbide";
   std::vector<long long> keys;  // diameters in micrometres
   keys.reserve(holes.size());
   for (const aco::Hole& h : holes) keys.push_back(std::llround(h.diameter * 1000.0));
@@ -198,6 +212,22 @@ ToolTable generate_tool_table(const aco::HoleSet& holes, Material material, doub
     tool.number = ++number;
     tool.diameter_mm = static_cast<double>(k) / 1000.0;
     const double d = std::max(tool.diameter_mm, 0.1);
+    if (carbide) {
+      // Solid carbide micro drills in FR-4 (drill makers' charts, e.g. Union
+      // Tool's and Kyocera's PCB drilling conditions): about 150 m/min at the
+      // edge, and a feed per revolution growing with the diameter from about
+      // 0.01 mm at 0.2 mm to 0.05 mm at 2 mm and above; one stroke, no pecks.
+      const double vc_carbide = material == Material::Pcb ? 150.0 : vc * 2.0;
+      tool.spindle_rpm = static_cast<int>(std::clamp(std::round(1000.0 * vc_carbide / (M_PI * d)), 100.0, std::max(100.0, double(max_rpm))));
+      const double per_rev = std::clamp(0.006 + 0.022 * d, 0.008, 0.05);
+      tool.feed_mm_min = std::max(10.0, std::round(tool.spindle_rpm * per_rev));
+      tool.depth_mm = -(thickness_mm + 0.3 * d + 0.5);
+      tool.max_hits = default_max_hits(tool.diameter_mm);
+      e.min_hole_mm = tool.diameter_mm - 0.0005;
+      e.max_hole_mm = tool.diameter_mm + 0.0005;
+      t.entries.push_back(e);
+      continue;
+    }
     tool.spindle_rpm = static_cast<int>(std::clamp(std::round(1000.0 * vc / (M_PI * d)), 100.0, std::max(100.0, double(max_rpm))));
     tool.feed_mm_min = std::max(10.0, std::round(tool.spindle_rpm * feed_per_d * d));
     // Through the plate, plus the 118° point (0.3 D) and 0.5 mm to break through.
@@ -323,6 +353,75 @@ std::optional<aco::Point2> stated_zero(std::string_view program) {
   return aco::Point2{x, y};
 }
 
+std::vector<PanelCopy> panel_grid(const std::string& text, const std::string& pitch) {
+  int cols = 0, rows = 0;
+  char x = 0, rest = 0;
+  if (std::sscanf(text.c_str(), "%d%c%d%c", &cols, &x, &rows, &rest) != 3 || (x != 'x' && x != 'X') || cols < 1 || rows < 1 ||
+      static_cast<long long>(cols) * rows > 10000) {
+    throw UserError("--panel must be COLSxROWS (e.g. 3x2, at most 10000 copies) or a panel file (got \"" + text + "\")");
+  }
+  double dx = 0, dy = 0;
+  if (pitch.empty() || std::sscanf(pitch.c_str(), "%lf,%lf%c", &dx, &dy, &rest) != 2 || !std::isfinite(dx) || !std::isfinite(dy)) {
+    throw UserError("--panel " + text + " needs --pitch DX,DY in mm (the distance from one copy to the next)");
+  }
+  std::vector<PanelCopy> copies;
+  for (int r = 0; r < rows; ++r) {
+    for (int c = 0; c < cols; ++c) copies.push_back({{c * dx, r * dy}, 0, false});
+  }
+  return copies;
+}
+
+std::vector<PanelCopy> load_panel(const std::string& path) {
+  const json j = parse_json_file(path);
+  if (!j.is_object() || !j.contains("copies") || !j["copies"].is_array() || j["copies"].empty()) {
+    throw UserError(path, 1, "a panel file is {\"copies\": [{\"x_mm\": 0, \"y_mm\": 0, \"rotate_deg\": 0, \"mirror\": false}, ...]}");
+  }
+  std::vector<PanelCopy> copies;
+  int k = 0;
+  for (const json& c : j["copies"]) {
+    const std::string where = path + " (copy " + std::to_string(++k) + ")";
+    if (!c.is_object()) throw UserError(where, 0, "each copy is a JSON object");
+    PanelCopy copy;
+    copy.offset = {json_number(c, "x_mm", 0.0, where), json_number(c, "y_mm", 0.0, where)};
+    const double turn = json_number(c, "rotate_deg", 0.0, where);
+    if (turn != 0 && turn != 90 && turn != 180 && turn != 270) throw UserError(where, 0, "rotate_deg must be 0, 90, 180 or 270");
+    copy.rotate_deg = static_cast<int>(turn);
+    if (c.contains("mirror")) {
+      if (!c["mirror"].is_boolean()) throw UserError(where, 0, "\"mirror\" must be true or false");
+      copy.mirror = c["mirror"].get<bool>();
+    }
+    copies.push_back(copy);
+  }
+  return copies;
+}
+
+aco::HoleSet panelize(const aco::HoleSet& board, const std::vector<PanelCopy>& copies, std::vector<std::uint32_t>& hole_source) {
+  std::uint32_t chains = 0;
+  for (const aco::Hole& h : board) chains = std::max(chains, h.chain);
+  aco::HoleSet out;
+  out.reserve(board.size() * copies.size());
+  std::vector<std::uint32_t> sources;
+  for (std::size_t k = 0; k < copies.size(); ++k) {
+    const PanelCopy& c = copies[k];
+    for (std::size_t i = 0; i < board.size(); ++i) {
+      aco::Hole h = board[i];
+      double x = c.mirror ? -h.center.x : h.center.x, y = h.center.y;
+      // Quarter turns exactly: no sin/cos rounding on a copy's coordinates.
+      for (int q = 0; q < c.rotate_deg / 90; ++q) {
+        const double t = x;
+        x = -y;
+        y = t;
+      }
+      h.center = {x + c.offset.x, y + c.offset.y};
+      if (h.chain != 0) h.chain += static_cast<std::uint32_t>(k) * chains;
+      out.push_back(std::move(h));
+      if (!hole_source.empty()) sources.push_back(hole_source[i]);
+    }
+  }
+  if (!hole_source.empty()) hole_source = std::move(sources);
+  return out;
+}
+
 std::size_t fill_missing_diameters(aco::HoleSet& holes, double diameter_mm) {
   std::size_t filled = 0;
   for (aco::Hole& h : holes) {
@@ -433,6 +532,13 @@ RouteStats route_stats(const aco::HoleSet& holes, const std::vector<ToolGroup>& 
   RouteStats st;
   const Machine& m = options.machine;
   const auto& s = options.program;
+  TimeSplit& split = st.split;
+  // Each part is added to the total as it is added to its share, in the same order as ever.
+  auto spend = [&](double& share, double seconds) {
+    share += seconds;
+    st.time_s += seconds;
+  };
+  const bool waits_for_spindle = !gcode::has_canned_cycles(s.dialect);
   aco::Point2 at = m.start;
   for (std::size_t g = 0; g < groups.size(); ++g) {
     const aco::Order& order = *orders[g];
@@ -441,26 +547,27 @@ RouteStats route_stats(const aco::HoleSet& holes, const std::vector<ToolGroup>& 
       st.tool_time_s.push_back(0.0);
       continue;
     }
-    st.time_s += m.tool_change_s;
+    spend(split.tool_changes_s, m.tool_change_s);
+    if (waits_for_spindle) spend(split.pauses_s, m.spindle_start_s);
     // Down from Z home to the initial plane, once per tool (approximate Z home as 100 mm up).
-    st.time_s += rapid_time_s(100.0, m.rapid_z_mm_min, m.accel_mm_s2);
+    spend(split.moves_s, rapid_time_s(100.0, m.rapid_z_mm_min, m.accel_mm_s2));
     for (std::size_t i = 0; i < order.size(); ++i) {
       const aco::Point2 p = holes[order[i]].center;
       st.travel_mm += aco::euclidean(at, p);
-      st.time_s += xy_move_time(at, p, m);
+      spend(split.moves_s, xy_move_time(at, p, m));
       const bool last = i + 1 == order.size();
       const bool clear = !last && crosses_clamp(p, holes[order[i + 1]].center, m);
-      st.time_s += cycle_time_s(groups[g].tool, s, m, !s.retract_to_r || last || clear);
-      if (i == 0) st.time_s += rapid_time_s(s.initial_z_mm - s.r_plane_mm, m.rapid_z_mm_min, m.accel_mm_s2);
+      spend(split.drilling_s, m.hit_s > 0 ? m.hit_s : cycle_time_s(groups[g].tool, s, m, !s.retract_to_r || last || clear));
+      if (i == 0) spend(split.moves_s, rapid_time_s(s.initial_z_mm - s.r_plane_mm, m.rapid_z_mm_min, m.accel_mm_s2));
       at = p;
     }
-    st.time_s += rapid_time_s(100.0, m.rapid_z_mm_min, m.accel_mm_s2);
+    spend(split.moves_s, rapid_time_s(100.0, m.rapid_z_mm_min, m.accel_mm_s2));
     st.tool_time_s.push_back(st.time_s - before);
   }
   if (options.return_at_end) {
     const aco::Point2 finish = options.finish.value_or(m.start);
     st.travel_mm += aco::euclidean(at, finish);
-    st.time_s += xy_move_time(at, finish, m);
+    spend(split.moves_s, xy_move_time(at, finish, m));
   }
   return st;
 }
@@ -522,6 +629,65 @@ RouteUnits route_units(const aco::HoleSet& holes, const aco::Order& input_order)
 }
 
 }  // namespace
+
+int default_max_hits(double d) {
+  // Carbide micro drills in FR-4, one 1.6 mm board a stack: makers give
+  // 1000-3000 hits for 0.2-0.3 mm drills, more for larger ones.
+  if (d <= 0.3) return 1500;
+  if (d <= 0.6) return 2000;
+  if (d <= 1.2) return 3000;
+  return 4000;
+}
+
+void split_worn_drills(const aco::HoleSet& holes, PlanResult& result, const PlanOptions& options) {
+  const bool any = std::any_of(result.groups.begin(), result.groups.end(), [](const ToolGroup& g) {
+    return g.tool.max_hits > 0 && g.optimized.size() > static_cast<std::size_t>(g.tool.max_hits);
+  });
+  if (!any) return;
+  int next_number = 0;
+  for (const ToolGroup& g : result.groups) next_number = std::max(next_number, g.tool.number);
+  std::vector<ToolGroup> split;
+  for (ToolGroup& g : result.groups) {
+    const std::size_t life = g.tool.max_hits > 0 ? static_cast<std::size_t>(g.tool.max_hits) : g.optimized.size();
+    if (g.optimized.size() <= life) {
+      split.push_back(std::move(g));
+      continue;
+    }
+    // The same cut in every variant, so that each is timed with the same changes.
+    auto chunk = [&](const aco::Order& order, std::size_t k) {
+      const std::size_t from = std::min(order.size(), k * life), to = std::min(order.size(), (k + 1) * life);
+      return aco::Order(order.begin() + static_cast<long>(from), order.begin() + static_cast<long>(to));
+    };
+    const std::size_t runs = (g.optimized.size() + life - 1) / life;
+    for (std::size_t k = 0; k < runs; ++k) {
+      ToolGroup part;
+      part.tool = g.tool;
+      if (k > 0) {
+        part.tool.number = ++next_number;
+        part.tool.name = gcode::tool_name(g.tool) + " SISTER OF T" + std::to_string(g.tool.number);
+      }
+      part.input_order = chunk(g.input_order, k);
+      part.nearest_neighbor = chunk(g.nearest_neighbor, k);
+      part.optimized = chunk(g.optimized, k);
+      part.solution = g.solution;
+      split.push_back(std::move(part));
+    }
+  }
+  if (next_number > 200) {
+    throw UserError("the drills' lives (max_hits) need tool numbers up to T" + std::to_string(next_number) +
+                    "; a control has T1..T200: give longer lives or split the job");
+  }
+  result.groups = std::move(split);
+  std::vector<const aco::Order*> in, nn, opt;
+  for (const ToolGroup& g : result.groups) {
+    in.push_back(&g.input_order);
+    nn.push_back(&g.nearest_neighbor);
+    opt.push_back(&g.optimized);
+  }
+  result.input_order = route_stats(holes, result.groups, in, options);
+  result.nearest_neighbor = route_stats(holes, result.groups, nn, options);
+  result.optimized = route_stats(holes, result.groups, opt, options);
+}
 
 void order_groups(const aco::HoleSet& holes, PlanResult& result, const PlanOptions& options) {
   const Machine& m = options.machine;
@@ -601,8 +767,29 @@ PlanResult plan_job(const aco::HoleSet& holes, const PlanOptions& options, const
     }
   }
 
-  ToolTable table = options.tools ? *options.tools
-                                  : generate_tool_table(holes, options.material, options.thickness_mm, m.max_rpm);
+  ToolTable table;
+  const bool apart = options.keep_sources_apart && !options.hole_source.empty();
+  if (apart) {
+    if (options.tools) throw UserError(source, 0, "keeping inputs apart generates each input's tools; drop --tools");
+    // Each input's tools, numbered on from the previous input's.
+    const std::uint32_t sources = *std::max_element(options.hole_source.begin(), options.hole_source.end()) + 1;
+    for (std::uint32_t k = 0; k < sources; ++k) {
+      aco::HoleSet mine;
+      for (std::size_t i = 0; i < holes.size(); ++i) {
+        if (options.hole_source[i] == k) mine.push_back(holes[i]);
+      }
+      if (mine.empty()) continue;
+      ToolTable part = generate_tool_table(mine, options.material, options.thickness_mm, m);
+      for (ToolTableEntry& e : part.entries) {
+        e.tool.number = static_cast<int>(table.entries.size()) + 1;
+        e.source = static_cast<int>(k);
+        table.entries.push_back(e);
+      }
+    }
+    table.generated = true;
+  } else {
+    table = options.tools ? *options.tools : generate_tool_table(holes, options.material, options.thickness_mm, m);
+  }
   PlanResult result;
   result.groups.resize(table.entries.size());
   std::vector<std::string> unfit;
@@ -611,6 +798,7 @@ PlanResult plan_job(const aco::HoleSet& holes, const PlanOptions& options, const
     const double d = holes[i].diameter;
     std::size_t chosen = table.entries.size();
     for (std::size_t t = 0; t < table.entries.size(); ++t) {
+      if (table.entries[t].source >= 0 && static_cast<std::uint32_t>(table.entries[t].source) != options.hole_source[i]) continue;
       if (d >= table.entries[t].min_hole_mm - 1e-9 && d <= table.entries[t].max_hole_mm + 1e-9) {
         chosen = t;
         break;
@@ -638,6 +826,7 @@ PlanResult plan_job(const aco::HoleSet& holes, const PlanOptions& options, const
                       result.groups.end());
 
   order_groups(holes, result, options);
+  split_worn_drills(holes, result, options);
   return result;
 }
 

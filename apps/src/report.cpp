@@ -29,12 +29,29 @@ std::string report_json(const aco::HoleSet& holes, const PlanResult& plan, const
     t["path_mm"] = round6(g.solution.length);
     j["tools"].push_back(t);
   }
+  // Each physical drill (a sister tool is its own) with the holes it makes and its life.
+  j["drills"] = nlohmann::ordered_json::array();
+  for (const ToolGroup& g : plan.groups) {
+    j["drills"].push_back({{"tool", g.tool.number},
+                           {"diameter_mm", round6(g.tool.diameter_mm)},
+                           {"hits", g.optimized.size()},
+                           {"max_hits", g.tool.max_hits}});
+  }
   j["travel_mm"] = {{"input_order", round6(plan.input_order.travel_mm)},
                     {"nearest_neighbor", round6(plan.nearest_neighbor.travel_mm)},
                     {"optimized", round6(plan.optimized.travel_mm)}};
   j["machining_time_s"] = {{"input_order", round6(plan.input_order.time_s)},
                            {"nearest_neighbor", round6(plan.nearest_neighbor.time_s)},
                            {"optimized", round6(plan.optimized.time_s)}};
+  auto split = [](const TimeSplit& t) {
+    return nlohmann::ordered_json{{"moves", round6(t.moves_s)},
+                                  {"drilling", round6(t.drilling_s)},
+                                  {"tool_changes", round6(t.tool_changes_s)},
+                                  {"pauses", round6(t.pauses_s)}};
+  };
+  j["time_split_s"] = {{"input_order", split(plan.input_order.split)},
+                       {"nearest_neighbor", split(plan.nearest_neighbor.split)},
+                       {"optimized", split(plan.optimized.split)}};
   j["savings"] = {{"travel_pct_vs_input_order", pct_saved(plan.input_order.travel_mm, plan.optimized.travel_mm)},
                   {"travel_pct_vs_nearest_neighbor", pct_saved(plan.nearest_neighbor.travel_mm, plan.optimized.travel_mm)},
                   {"time_s_vs_input_order", round6(plan.input_order.time_s - plan.optimized.time_s)},
@@ -73,6 +90,15 @@ std::string report_json(const aco::HoleSet& holes, const PlanResult& plan, const
                           {"overlap_groups", pi.overlap_groups},
                           {"style", pi.style}};
   }
+  // The minutes a shop pays for: one panel (one run of the program) and a batch of them, beside the input order's.
+  j["panel"] = {{"copies", ctx.panel_copies}, {"holes_per_copy", ctx.panel_copies ? holes.size() / ctx.panel_copies : 0}};
+  j["batch"] = {{"panels", ctx.batch},
+                {"time_s", {{"input_order", round6(plan.input_order.time_s * static_cast<double>(ctx.batch))},
+                            {"optimized", round6(plan.optimized.time_s * static_cast<double>(ctx.batch))}}}};
+  nlohmann::ordered_json sources = nlohmann::ordered_json::array();
+  for (const auto& [file, count] : ctx.sources) sources.push_back({{"file", file}, {"holes", count}});
+  if (ctx.sources.empty()) sources.push_back({{"file", ctx.source}, {"holes", holes.size()}});
+  j["sources"] = sources;
   j["source"] = ctx.source;
   j["program"] = ctx.program;
   return j.dump(2) + "\n";

@@ -73,7 +73,7 @@ std::string setup_sheet_html(const aco::HoleSet& holes, const PlanResult& plan, 
   h << "<h2>Tools</h2>\n<table class=\"tools\">\n<tr><th>T</th><th>Tool</th><th class=\"n\">Diameter " << unit
     << "</th><th>Cycle</th><th class=\"n\">Depth Z " << unit << "</th><th class=\"n\">Peck " << unit
     << "</th><th class=\"n\">Dwell s</th><th class=\"n\">Feed " << unit << "/min</th><th class=\"n\">rpm</th><th class=\"n\">Holes</th>"
-    << "<th class=\"n\">Time</th></tr>\n";
+    << "<th class=\"n\">Life</th><th class=\"n\">Time</th></tr>\n";
   for (std::size_t g = 0; g < plan.groups.size(); ++g) {
     const gcode::Tool& t = plan.groups[g].tool;
     const bool pecks = t.cycle == gcode::Cycle::G83 || t.cycle == gcode::Cycle::G73;
@@ -83,7 +83,9 @@ std::string setup_sheet_html(const aco::HoleSet& holes, const PlanResult& plan, 
       << (pecks ? len(t.peck_mm) : std::string("&#8211;")) << "</td><td class=\"n\">"
       << (t.cycle == gcode::Cycle::G82 ? gcode::format_number(t.dwell_s, 2) : std::string("&#8211;"))
       << "</td><td class=\"n\">" << feed(t.feed_mm_min) << "</td><td class=\"n\">" << t.spindle_rpm << "</td><td class=\"n\">"
-      << plan.groups[g].optimized.size() << "</td><td class=\"n\">" << minutes(tool_time) << "</td></tr>\n";
+      << plan.groups[g].optimized.size() << "</td><td class=\"n\">"
+      << (t.max_hits > 0 ? std::to_string(t.max_hits) : std::string("&#8211;")) << "</td><td class=\"n\">" << minutes(tool_time)
+      << "</td></tr>\n";
   }
   h << "</table>\n";
 
@@ -102,6 +104,17 @@ std::string setup_sheet_html(const aco::HoleSet& holes, const PlanResult& plan, 
     << "</th></tr>\n</table>\n"
     << "<p>Total estimated time: <b>" << minutes(op.time_s) << "</b>; travel " << saved(in.travel_mm, op.travel_mm)
     << " shorter and " << minutes(in.time_s - op.time_s) << " quicker than the input order.</p>\n";
+  // Where the time goes: only the moves depend on the order.
+  auto split_row = [&](const char* label, const TimeSplit& t, double total) {
+    h << "<tr><td>" << label << "</td><td class=\"n\">" << minutes(t.moves_s) << "</td><td class=\"n\">" << minutes(t.drilling_s)
+      << "</td><td class=\"n\">" << minutes(t.tool_changes_s) << "</td><td class=\"n\">" << minutes(t.pauses_s)
+      << "</td><td class=\"n\">" << minutes(total) << "</td></tr>\n";
+  };
+  h << "<table class=\"totals\">\n<tr><th>Time split</th><th class=\"n\">Moves</th><th class=\"n\">Drilling</th>"
+    << "<th class=\"n\">Tool changes</th><th class=\"n\">Pauses</th><th class=\"n\">Total</th></tr>\n";
+  split_row("Input order", in.split, in.time_s);
+  split_row("This program", op.split, op.time_s);
+  h << "</table>\n";
 
   // The route picture, to scale, in program coordinates with program zero marked.
   std::string svg = route_svg(holes, plan, options, pl, ctx.name);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 
 #include "gcode/program.h"
@@ -11,8 +12,28 @@ namespace app {
 
 namespace {
 
-// Colour-blind-safe palette (Okabe & Ito 2008), cycled for many tools.
+// Colour-blind-safe palette (Okabe & Ito 2008) for the first eight tools;
+// past eight (panels, sister tools: a job can have dozens) each tool gets a
+// hue of its own, 137.5 degrees (the golden angle) from the last, so no two
+// tools ever share a colour and neighbours in the list look far apart.
 const char* kPalette[] = {"#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9", "#F0E442", "#000000"};
+
+std::string tool_colour(std::size_t g) {
+  if (g < 8) return kPalette[g];
+  const double hue = std::fmod(static_cast<double>(g - 8) * 137.508, 360.0);
+  // Lightness alternates in three steps, so that hues close on the wheel still differ.
+  const double light = 0.35 + 0.12 * static_cast<double>((g - 8) % 3);
+  const double sat = 0.75;
+  auto f = [&](double n) {
+    const double k = std::fmod(n + hue / 30.0, 12.0);
+    const double a = sat * std::min(light, 1.0 - light);
+    return light - a * std::max(-1.0, std::min({k - 3.0, 9.0 - k, 1.0}));
+  };
+  char buf[8];
+  std::snprintf(buf, sizeof buf, "#%02X%02X%02X", static_cast<int>(std::lround(f(0) * 255)),
+                static_cast<int>(std::lround(f(8) * 255)), static_cast<int>(std::lround(f(4) * 255)));
+  return buf;
+}
 
 std::string num(double v) { return gcode::format_number(v, 3); }
 
@@ -42,9 +63,9 @@ void panel(std::ostringstream& out, const aco::HoleSet& holes, const PlanResult&
   // Path, tool by tool, from the start and back to it.
   aco::Point2 at = options.machine.start;
   for (std::size_t g = 0; g < plan.groups.size(); ++g) {
-    const char* colour = kPalette[g % 8];
+    const std::string colour = tool_colour(g);
     out << "<polyline fill=\"none\" stroke=\"" << colour << "\" stroke-width=\"1.2\" stroke-opacity=\"0.8\" "
-        << "marker-mid=\"url(#arrow" << g % 8 << ")\" points=\"" << num(X(at.x)) << "," << num(Y(at.y));
+        << "marker-mid=\"url(#arrow" << g << ")\" points=\"" << num(X(at.x)) << "," << num(Y(at.y));
     for (aco::HoleIndex i : *orders[g]) {
       const aco::Point2 p = holes[i].center;
       // A midpoint vertex carries the direction arrow in the middle of each leg.
@@ -59,7 +80,7 @@ void panel(std::ostringstream& out, const aco::HoleSet& holes, const PlanResult&
       << "," << num(Y(at.y)) << " " << num(X(home.x)) << "," << num(Y(home.y)) << "\"/>\n";
   // Holes to scale (at least a visible dot), coloured by tool.
   for (std::size_t g = 0; g < plan.groups.size(); ++g) {
-    out << "<g fill=\"" << kPalette[g % 8] << "\" fill-opacity=\"0.55\" stroke=\"" << kPalette[g % 8] << "\">\n";
+    out << "<g fill=\"" << tool_colour(g) << "\" fill-opacity=\"0.55\" stroke=\"" << tool_colour(g) << "\">\n";
     for (aco::HoleIndex i : *orders[g]) {
       const aco::Hole& hole = holes[i];
       out << "<circle cx=\"" << num(X(hole.center.x)) << "\" cy=\"" << num(Y(hole.center.y)) << "\" r=\""
@@ -101,9 +122,9 @@ std::string document(const aco::HoleSet& holes, const PlanResult& plan, const Pl
       << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << num(width) << "\" height=\"" << num(height)
       << "\" viewBox=\"0 0 " << num(width) << " " << num(height) << "\" font-family=\"sans-serif\">\n"
       << "<title>" << xml_escape(title) << "</title>\n<defs>\n";
-  for (int c = 0; c < 8; ++c) {
+  for (std::size_t c = 0; c < plan.groups.size(); ++c) {
     out << "<marker id=\"arrow" << c << "\" viewBox=\"0 0 10 10\" refX=\"5\" refY=\"5\" markerWidth=\"5\" "
-        << "markerHeight=\"5\" orient=\"auto\"><path d=\"M0,1 L10,5 L0,9 z\" fill=\"" << kPalette[c] << "\"/></marker>\n";
+        << "markerHeight=\"5\" orient=\"auto\"><path d=\"M0,1 L10,5 L0,9 z\" fill=\"" << tool_colour(c) << "\"/></marker>\n";
   }
   out << "</defs>\n<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>\n";
   std::vector<const aco::Order*> input, optimized;
@@ -127,7 +148,7 @@ std::string document(const aco::HoleSet& holes, const PlanResult& plan, const Pl
   for (std::size_t g = 0; g < plan.groups.size(); ++g) {
     const ToolGroup& group = plan.groups[g];
     out << "<rect x=\"" << num(margin) << "\" y=\"" << num(y - 10) << "\" width=\"12\" height=\"12\" fill=\""
-        << kPalette[g % 8] << "\"/><text x=\"" << num(margin + 18) << "\" y=\"" << num(y) << "\">T"
+        << tool_colour(g) << "\"/><text x=\"" << num(margin + 18) << "\" y=\"" << num(y) << "\">T"
         << group.tool.number << "  Ø " << gcode::format_number(group.tool.diameter_mm, 3) << " mm  "
         << group.optimized.size() << " holes  " << gcode::to_string(group.tool.cycle) << "</text>\n";
     y += 18;

@@ -59,7 +59,10 @@ std::vector<std::string> check_drilled(const gcode::Interpretation& run, const a
     const auto& d = run.holes[same_tool.front()];
     const long long key = std::llround(h.diameter * 1000.0);
     auto [it, inserted] = tool_of_diameter.emplace(key, d.tool);
-    if (!inserted && it->second != d.tool) {
+    // Two tools for one diameter: sister tools (a worn drill replaced) when
+    // the program names both with that diameter; otherwise a fault.
+    const bool sisters = run.tool_diameter_mm.count(it->second) && run.tool_diameter_mm.count(d.tool);
+    if (!inserted && it->second != d.tool && !sisters) {
       faults.push_back("holes of D" + gcode::format_number(h.diameter, 3) + " are drilled with T" +
                        std::to_string(it->second) + " and T" + std::to_string(d.tool));
     }

@@ -26,6 +26,13 @@ struct Machine {
   // then that manual change, re-zeroing Z included).
   bool tool_changer = true;
   double spindle_start_s = 0.0;      // a control that does not wait for its spindle waits this long after M3
+  // A PCB drilling machine's single-stroke hit: the seconds one hole costs at
+  // the spot, Z down and up (its data sheet's "hits per minute"); 0: timed
+  // from the tool's feed, pecks and dwell instead.
+  double hit_s = 0.0;
+  // The drills it uses: "hss" twist drills (the default) or "carbide" micro
+  // drills, which a PCB drilling machine runs at high speed in one stroke.
+  std::string drills = "hss";
   double rapid_xy_mm_min = 25400.0;  // 1000 in/min
   double rapid_z_mm_min = 25400.0;
   double accel_mm_s2 = 2500.0;       // per axis
@@ -74,6 +81,7 @@ struct ToolTableEntry {
   gcode::Tool tool;
   double min_hole_mm = 0.0;   // holes in [min, max] are drilled with this tool
   double max_hole_mm = 0.0;
+  int source = -1;            // only the holes of this input (PlanOptions::hole_source); -1: any
 };
 
 struct ToolTable {
@@ -82,8 +90,11 @@ struct ToolTable {
 };
 
 ToolTable load_tool_table(const std::string& path);
-// One tool per distinct diameter (to 0.001 mm), ascending, feeds and speeds from the material.
-ToolTable generate_tool_table(const aco::HoleSet& holes, Material material, double thickness_mm, int max_rpm);
+// One tool per distinct diameter (to 0.001 mm), ascending, feeds and speeds
+// from the material and the machine: HSS twist drills (pecked where deep), or
+// on a machine with carbide micro drills (a PCB drill) single strokes at the
+// carbide's speed and feed per revolution; spindle speeds within the machine's.
+ToolTable generate_tool_table(const aco::HoleSet& holes, Material material, double thickness_mm, const Machine& machine);
 
 enum class Objective { Distance, Time };
 
@@ -128,6 +139,23 @@ std::string origin_comment(const Placement& placement, gcode::Units units);
 std::string zero_comment(const Placement& placement);
 std::optional<aco::Point2> stated_zero(std::string_view program);
 
+// One copy of a board on a panel: the board mirrored (X negated) if asked,
+// turned about the drawing's zero by 0, 90, 180 or 270 degrees
+// anticlockwise, then moved by `offset` (mm, drawing coordinates).
+struct PanelCopy {
+  aco::Point2 offset;
+  int rotate_deg = 0;
+  bool mirror = false;
+};
+// --panel COLSxROWS --pitch DX,DY: copy (c, r) moved by (c·DX, r·DY), row by row.
+std::vector<PanelCopy> panel_grid(const std::string& cols_x_rows, const std::string& pitch);
+// --panel FILE.json: {"copies": [{"x_mm": 0, "y_mm": 0, "rotate_deg": 0, "mirror": false}, ...]}.
+std::vector<PanelCopy> load_panel(const std::string& path);
+// Every copy's holes, copy after copy, each copy's slot chains its own;
+// `hole_source` (per hole, may be empty) is repeated to match.
+aco::HoleSet panelize(const aco::HoleSet& board, const std::vector<PanelCopy>& copies,
+                      std::vector<std::uint32_t>& hole_source);
+
 struct PlanOptions {
   aco::Params solver;
   Objective objective = Objective::Distance;
@@ -140,6 +168,12 @@ struct PlanOptions {
   // machine's start) — or, for a program that ends over its last hole, stays.
   bool return_at_end = true;
   std::optional<aco::Point2> finish;
+  // Several inputs: per hole, the input it came from (empty: one input). With
+  // keep_sources_apart each input's holes get tools of their own, drilled
+  // input after input (plated and non-plated holes at different steps);
+  // otherwise holes of one diameter share a tool whatever file they are in.
+  std::vector<std::uint32_t> hole_source;
+  bool keep_sources_apart = false;
 };
 
 struct ToolGroup {
@@ -150,9 +184,18 @@ struct ToolGroup {
   aco::Solution solution;
 };
 
+// Where the machine's time goes: moving between holes (XY rapids, and Z to
+// and from the clearance), drilling (each hole's cycle at its spot), changing
+// tools, and waiting (spindle run-up). The parts add up to the total.
+struct TimeSplit {
+  double moves_s = 0.0, drilling_s = 0.0, tool_changes_s = 0.0, pauses_s = 0.0;
+  double total() const { return moves_s + drilling_s + tool_changes_s + pauses_s; }
+};
+
 struct RouteStats {
   double travel_mm = 0.0;   // XY, start → every hole of every tool → start
   double time_s = 0.0;      // machining time estimate
+  TimeSplit split;          // the same time by what it is spent on
   std::vector<double> tool_time_s;  // per tool group: its tool change, moves and cycles (the return home is in none)
 };
 
@@ -179,6 +222,16 @@ void check_travel(const aco::HoleSet& holes, const Machine& machine, const std::
 // of the table takes, a hole no tool fits, one under a clamp
 // or holes that do not fit the machine's travel (check_travel).
 PlanResult plan_job(const aco::HoleSet& holes, const PlanOptions& options, const std::string& source);
+
+// The life of a carbide micro drill in FR-4 by diameter, in hits (drill
+// makers' figures for one 1.6 mm board per stack: the smallest wear first).
+int default_max_hits(double diameter_mm);
+
+// Drills that wear out: a group with more holes than its tool's max_hits is
+// cut, in drilling order, into runs of at most max_hits, each run a physical
+// drill of its own — a sister tool with the next free tool number — and the
+// travel and time of every variant counted again with the extra changes.
+void split_worn_drills(const aco::HoleSet& holes, PlanResult& result, const PlanOptions& options);
 
 // Orders every group of `result` (its input_order set): each an open path
 // from where the previous one ended, the last back to the finish; fills the

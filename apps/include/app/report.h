@@ -3,6 +3,8 @@
 // more may be added, none renamed) and the --convergence CSV.
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "app/plan.h"
 #include "formats/holes.h"
@@ -16,6 +18,10 @@ struct ReportContext {
   Placement placement;  // where program zero sits
   std::string name;     // job name: the input's stem or its own name
   const formats::LoadedHoles* input = nullptr;  // slots drilled, features not drilled
+  // Each input of the job with its holes (the report's "sources"); empty: `source` alone.
+  std::vector<std::pair<std::string, std::size_t>> sources;
+  std::size_t panel_copies = 1;  // copies of the board in one program (--panel)
+  std::size_t batch = 1;         // programs run one after another (--batch): the report's "batch"
   // A reordered drilling program (issue 14): how it was read and written.
   struct ProgramInput {
     std::size_t runs = 0;

@@ -35,6 +35,7 @@ struct Tool {
   Cycle cycle = Cycle::G81;
   double peck_mm = 0.0;        // Q for G83/G73
   double dwell_s = 0.0;        // P for G82
+  int max_hits = 0;            // the drill's life in holes (0: no limit); a worn drill is replaced by a sister tool
 };
 
 // One tool's holes in drilling order. `index` gives each hole's 1-based number
