@@ -146,6 +146,26 @@ TEST(excellon_test, modal_incremental_offsets_and_repeats) {
   EXPECT_NEAR(r.holes[7].center.x, 103.0, 1e-9) << "R3: three more hits, 1 mm apart";
 }
 
+// Issue 25: a step-and-repeat panel (Excellon CNC-7: M25 begins a pattern,
+// M01 ends it, each M02 X Y drills it again moved by X Y from the previous
+// copy, M08 ends) is read as the copies it makes, tools and slots included.
+TEST(excellon_test, step_and_repeat_is_read_as_its_copies) {
+  auto r = parse("M48\nMETRIC,TZ\nT1C0.800\nT2C1.000\n%\nG05\nT1\nM25\nX10.000Y10.000\nX20.000Y10.000\nT2\nX15.000Y20.000\n"
+                 "G85X15.000Y25.000\nM01\nM02X50.000Y0\nM02X50.000Y0\nM02X0Y40.000\nM08\nT1\nX1.0Y1.0\nM30\n");
+  ASSERT_EQ(r.holes.size(), 3u * 4 + 1);
+  ASSERT_EQ(r.slots.size(), 4u) << "the pattern's slot in every copy";
+  const double expect[][3] = {{10, 10, 0.8}, {20, 10, 0.8}, {15, 20, 1.0}, {60, 10, 0.8},  {70, 10, 0.8},   {65, 20, 1.0}, {110, 10, 0.8},
+                              {120, 10, 0.8}, {115, 20, 1.0}, {110, 50, 0.8}, {120, 50, 0.8}, {115, 60, 1.0}, {1, 1, 0.8}};
+  for (std::size_t i = 0; i < r.holes.size(); ++i) {
+    EXPECT_NEAR(r.holes[i].center.x, expect[i][0], 1e-9) << i;
+    EXPECT_NEAR(r.holes[i].center.y, expect[i][1], 1e-9) << i;
+    EXPECT_NEAR(r.holes[i].diameter, expect[i][2], 1e-9) << i;
+  }
+  EXPECT_NEAR(r.slots[3].to.y, 65.0, 1e-9);
+  EXPECT_THAT(error_of("M48\nINCH\nT1C0.5\n%\nT1\nM25\nX1Y1\nM01\nM02X1Y0M80\nM30\n"), ::testing::HasSubstr("t.drl:9: a swapped or mirrored"));
+  EXPECT_THAT(error_of("M48\nINCH\nT1C0.5\n%\nT1\nX1Y1\nM02X1Y0\nM30\n"), ::testing::HasSubstr("t.drl:7: M02 repeats a pattern"));
+}
+
 TEST(excellon_test, units_before_the_header_and_no_header_at_all) {
   auto m71 = parse("M71\nM48\nT1C0.5\n%\nT1\nX1000Y1000\nM30\n");
   EXPECT_NEAR(m71.holes[0].center.x, 1.0, 1e-9);

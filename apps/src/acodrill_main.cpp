@@ -726,7 +726,11 @@ int main(int argc, char** argv) {
   plan_cmd->add_option("--default-diameter", plan.default_diameter,
                        "Diameter in mm of holes the input gives none (CSV rows without one, TSPLIB nodes)")
       ->check(CLI::Range(1e-6, 1e4));
-  plan_cmd->add_option("--objective", plan.objective, "distance (default) | time: minimise travel or rapid time");
+  plan_cmd->add_option("--objective", plan.objective,
+                       "distance (default) | time: minimise travel or rapid time. Distance is the default for every "
+                       "class: where rapids move in a straight line (router, pcb-drill) the two are the same route; "
+                       "on the vf2's dogleg rapids, time saved 0.0-0.8 % of the moving time (under 0.3 s a board) on "
+                       "the real boards we measured while making the travel up to 11 % longer");
   plan_cmd->add_option("--resume-from", plan.resume_from, "Drill holes N, N+1, ... of the same order (default 1)")
       ->check(CLI::Range(std::size_t{1}, std::size_t{100'000'000}));
   plan_cmd->add_option("--program-number", plan.program_number, "O-number (default 1001)")->check(CLI::Range(1, 99999));

@@ -88,8 +88,53 @@ class Reader {
   std::vector<aco::Point2> route_;  // file units, offset applied
   void end_path();
   void add_slot(aco::Point2 from, aco::Point2 to, std::uint32_t line);
+  // Step and repeat (Excellon CNC-7: M25 begins a pattern, M01 ends it, each
+  // M02 X Y drills it again moved by X Y from the previous copy, M08 ends):
+  // the pattern's holes and slots as first drilled, and where the last copy is.
+  bool recording_ = false;
+  std::size_t pattern_holes_ = 0, pattern_slots_ = 0;  // where the pattern starts in out_.holes / out_.slots
+  std::size_t pattern_hole_end_ = 0, pattern_slot_end_ = 0;
+  double step_x_ = 0, step_y_ = 0;  // mm, the last copy's offset from the pattern
+  void repeat_pattern(std::string_view s);
   LoadedHoles out_;
 };
+
+void Reader::repeat_pattern(std::string_view s) {
+  // "M02X1.5Y0": one more copy, moved by X Y (file units) from the last one.
+  if (s.find("M70") != std::string_view::npos || s.find("M80") != std::string_view::npos ||
+      s.find("M90") != std::string_view::npos) {
+    fail("a swapped or mirrored step and repeat (M70/M80/M90) is not read; export the panel without it");
+  }
+  if (pattern_hole_end_ == pattern_holes_ && pattern_slot_end_ == pattern_slots_) {
+    fail("M02 repeats a pattern, but no M25 ... M01 pattern came before it");
+  }
+  double dx = 0, dy = 0;
+  std::size_t i = 3;
+  while (i < s.size()) {
+    const char letter = s[i++];
+    std::string_view v = number_at(s, i);
+    if (letter == 'X') dx = v.empty() ? 0.0 : coordinate(v);
+    else if (letter == 'Y') dy = v.empty() ? 0.0 : coordinate(v);
+    else if (letter != ' ') fail("unexpected \"" + std::string(s.substr(0, 40)) + "\" in a step and repeat");
+  }
+  step_x_ += dx * unit_mm();
+  step_y_ += dy * unit_mm();
+  for (std::size_t k = pattern_holes_; k < pattern_hole_end_; ++k) {
+    aco::Hole h = out_.holes[k];
+    h.center = {h.center.x + step_x_, h.center.y + step_y_};
+    h.source_line = line_;
+    out_.holes.push_back(std::move(h));
+    check_limit(path_, line_, out_.holes.size(), options_.dxf.max_holes);
+  }
+  for (std::size_t k = pattern_slots_; k < pattern_slot_end_; ++k) {
+    Slot slot = out_.slots[k];
+    slot.from = {slot.from.x + step_x_, slot.from.y + step_y_};
+    slot.to = {slot.to.x + step_x_, slot.to.y + step_y_};
+    slot.source_line = line_;
+    out_.slots.push_back(std::move(slot));
+    check_limit(path_, line_, out_.slots.size(), options_.dxf.max_holes);
+  }
+}
 
 void Reader::define_tool(std::string_view s) {
   // "T01C0.028", "T1F00S00C0.028", "T1C0.028F200S100" (in the body, as old OrCAD writes)
@@ -201,6 +246,29 @@ void Reader::hit(double x, double y) {
 void Reader::body_line(std::string_view s) {
   if (s == "M30" || s == "M00" || s == "M02") {
     ended_ = true;
+    return;
+  }
+  if (s == "M25") {
+    recording_ = true;
+    pattern_holes_ = pattern_hole_end_ = out_.holes.size();
+    pattern_slots_ = pattern_slot_end_ = out_.slots.size();
+    step_x_ = step_y_ = 0;
+    return;
+  }
+  if (s == "M01" && recording_) {
+    recording_ = false;
+    pattern_hole_end_ = out_.holes.size();
+    pattern_slot_end_ = out_.slots.size();
+    return;
+  }
+  if (starts_with(s, "M02") && s.size() > 3) {
+    repeat_pattern(s);
+    return;
+  }
+  if (s == "M08") {
+    recording_ = false;
+    pattern_holes_ = pattern_hole_end_ = pattern_slots_ = pattern_slot_end_ = 0;
+    step_x_ = step_y_ = 0;
     return;
   }
   if (s == "M48") {
