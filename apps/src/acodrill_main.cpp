@@ -20,8 +20,6 @@
 #include "formats/writers.h"
 #include "app/files.h"
 #include "app/inputs.h"
-#include "app/plan.h"
-#include "app/reorder.h"
 #include "app/report.h"
 #include "app/setup_sheet.h"
 #include "app/svg.h"
@@ -29,6 +27,8 @@
 #include "gcode/drilling.h"
 #include "gcode/interpreter.h"
 #include "gcode/program.h"
+#include "planning/plan.h"
+#include "planning/reorder.h"
 
 namespace {
 
@@ -170,8 +170,8 @@ void print_warnings(const app::LoadedHoles& loaded, const std::string& path, boo
   std::cerr << "acodrill: " << (path == "-" ? "<stdin>" : path) << ": " << summary << "\n";
 }
 
-app::Origin parse_origin(const std::string& text) {
-  auto origin = app::origin_from_string(text);
+planning::Origin parse_origin(const std::string& text) {
+  auto origin = planning::origin_from_string(text);
   if (!origin) {
     throw app::UserError("--origin must be drawing, lower-left, center, upper-left or X,Y in mm (got \"" + text + "\")");
   }
@@ -180,7 +180,7 @@ app::Origin parse_origin(const std::string& text) {
 
 // A drill file written back stays in the input's coordinates, registered with
 // the board's other layers, wherever program zero is.
-std::vector<gcode::ToolPass> in_input_coordinates(std::vector<gcode::ToolPass> passes, const app::Placement& placement) {
+std::vector<gcode::ToolPass> in_input_coordinates(std::vector<gcode::ToolPass> passes, const planning::Placement& placement) {
   for (gcode::ToolPass& p : passes) {
     for (aco::Point2& h : p.holes) h = {h.x + placement.zero.x, h.y + placement.zero.y};
   }
@@ -192,11 +192,22 @@ std::string format_minutes(double seconds) {
 }
 
 // --panel and --pitch, as plan and verify take them.
-std::vector<app::PanelCopy> panel_copies(const std::string& panel, const std::string& pitch) {
+std::vector<planning::PanelCopy> panel_copies(const std::string& panel, const std::string& pitch) {
   if (!pitch.empty() && panel.empty()) throw app::UserError("--pitch goes with --panel COLSxROWS");
   const bool file = panel.find_first_of("/.") != std::string::npos || std::filesystem::exists(panel);
   if (file && !pitch.empty()) throw app::UserError("--pitch goes with --panel COLSxROWS, not with a panel file");
-  return file ? app::load_panel(panel) : app::panel_grid(panel, pitch);
+  return file ? planning::parse_panel(app::read_file(panel), panel) : planning::panel_grid(panel, pitch);
+}
+
+// --machine: a built-in class by name, unless a file of that name is here, or a profile file.
+planning::Machine load_machine(const std::string& name_or_path) {
+  const bool plain = name_or_path.find_first_of("/.") == std::string::npos;
+  if (plain && !std::filesystem::exists(name_or_path)) {
+    if (auto m = planning::builtin_machine(name_or_path)) return *m;
+    throw app::UserError("--machine: no machine class \"" + name_or_path + "\" (built in: " +
+                         planning::machine_class_names() + "; or give a profile file, see acodrill machines)");
+  }
+  return planning::parse_machine(app::read_file(name_or_path), name_or_path);
 }
 
 int cmd_holes(const std::string& input, const InputArgs& in_args, const std::string& format, bool quiet) {
@@ -231,11 +242,11 @@ struct PlanArgs {
 
 // Writes the program and every asked-for output (each complete or not at
 // all), then the summary on stderr.
-int finish_plan(const PlanArgs& a, const std::string& program_text, const aco::HoleSet& holes, const app::PlanResult& plan,
-                const app::PlanOptions& o, const app::ReportContext& ctx, const std::vector<gcode::ToolPass>& passes,
+int finish_plan(const PlanArgs& a, const std::string& program_text, const aco::HoleSet& holes, const planning::PlanResult& plan,
+                const planning::PlanOptions& o, const app::ReportContext& ctx, const std::vector<gcode::ToolPass>& passes,
                 const app::Job* job = nullptr) {
   const app::LoadedHoles& loaded = *ctx.input;
-  const app::Placement& placement = ctx.placement;
+  const planning::Placement& placement = ctx.placement;
   const std::size_t n_tools = plan.groups.size();
   const std::string source_name = ctx.source.substr(ctx.source.find_last_of('/') == std::string::npos ? 0 : ctx.source.find_last_of('/') + 1);
   // Everything is computed; now write, each file complete or not at all.
@@ -305,7 +316,7 @@ int finish_plan(const PlanArgs& a, const std::string& program_text, const aco::H
     if (!a.svg.empty()) std::fprintf(stderr, "  picture: %s\n", a.svg.c_str());
     if (!a.svg_compare.empty()) std::fprintf(stderr, "  comparison: %s\n", a.svg_compare.c_str());
     if (!a.setup_sheet.empty()) std::fprintf(stderr, "  setup sheet: %s\n", a.setup_sheet.c_str());
-    const app::Extent& e = placement.extent;
+    const planning::Extent& e = placement.extent;
     if (ctx.program_input) {
       std::fprintf(stderr, "  coordinates as in the input program (its work offset); holes X%s..%s Y%s..%s mm\n",
                    gcode::format_number(e.x_min, 3).c_str(), gcode::format_number(e.x_max, 3).c_str(),
@@ -313,7 +324,7 @@ int finish_plan(const PlanArgs& a, const std::string& program_text, const aco::H
       return 0;
     }
     std::fprintf(stderr, "  program zero: %s (drawing X%s Y%s mm); holes X%s..%s Y%s..%s mm\n",
-                 app::describe(placement.origin).c_str(), gcode::format_number(placement.zero.x, 3).c_str(),
+                 planning::describe(placement.origin).c_str(), gcode::format_number(placement.zero.x, 3).c_str(),
                  gcode::format_number(placement.zero.y, 3).c_str(), gcode::format_number(e.x_min, 3).c_str(),
                  gcode::format_number(e.x_max, 3).c_str(), gcode::format_number(e.y_min, 3).c_str(),
                  gcode::format_number(e.y_max, 3).c_str());
@@ -323,7 +334,7 @@ int finish_plan(const PlanArgs& a, const std::string& program_text, const aco::H
 
 // Issue 14: another CAM's drilling program, reordered within each tool run;
 // its coordinates, tools, cycles and depths stay exactly as they are.
-int plan_program(const PlanArgs& a, app::PlanOptions o, const app::LoadedHoles& loaded, const InputArgs& in_args) {
+int plan_program(const PlanArgs& a, planning::PlanOptions o, const app::LoadedHoles& loaded, const InputArgs& in_args) {
   const std::string source = a.input == "-" ? "<stdin>" : a.input;
   const gcode::DrillingProgram& input = *loaded.program;
   // What only makes sense for hole files.
@@ -360,10 +371,10 @@ int plan_program(const PlanArgs& a, app::PlanOptions o, const app::LoadedHoles& 
       }
     }
   }
-  app::ReorderOptions ro;
+  planning::ReorderOptions ro;
   ro.min_spacing_mm = a.min_spacing;
-  app::check_travel(loaded.holes, o.machine, source);  // before the colony's work, not after
-  app::ReorderResult r = app::reorder_program(input, o, ro);
+  planning::check_travel(loaded.holes, o.machine, source);  // before the colony's work, not after
+  planning::ReorderResult r = planning::reorder_program(input, o, ro);
 
   const std::string source_name = source.substr(source.find_last_of('/') == std::string::npos ? 0 : source.find_last_of('/') + 1);
   gcode::DrillingWriteSettings ws;
@@ -390,13 +401,13 @@ int plan_program(const PlanArgs& a, app::PlanOptions o, const app::LoadedHoles& 
   } catch (const gcode::ProgramError& e) {
     throw app::UserError(source, e.line(), e.what());
   }
-  app::Placement placement;
-  placement.origin = app::Origin{app::OriginKind::Drawing, {}};
-  placement.extent = app::extent_of(r.holes);
+  planning::Placement placement;
+  placement.origin = planning::Origin{planning::OriginKind::Drawing, {}};
+  placement.extent = planning::extent_of(r.holes);
   app::ReportContext ctx{source, a.output, placement, loaded.name, &loaded, {}, 1, 1, std::nullopt};
   ctx.program_input = app::ReportContext::ProgramInput{r.plan.groups.size(), r.overlapping_holes, r.overlap_groups,
                                                        a.keep_style ? "keep" : "dialect"};
-  return finish_plan(a, program.str(), r.holes, r.plan, o, ctx, app::to_passes(r.holes, r.plan, o.machine));
+  return finish_plan(a, program.str(), r.holes, r.plan, o, ctx, planning::to_passes(r.holes, r.plan, o.machine));
 }
 
 int cmd_plan(const PlanArgs& a, const SolverArgs& s, const InputArgs& in_args) {
@@ -406,9 +417,9 @@ int cmd_plan(const PlanArgs& a, const SolverArgs& s, const InputArgs& in_args) {
       if (!out->empty() && app::same_file(input, *out)) throw app::UserError(*out, 0, "output would overwrite the input file " + input);
     }
   }
-  app::PlanOptions o;
+  planning::PlanOptions o;
   o.solver = to_params(s);
-  const app::Origin origin = parse_origin(a.origin.empty() ? "lower-left" : a.origin);
+  const planning::Origin origin = parse_origin(a.origin.empty() ? "lower-left" : a.origin);
   std::optional<gcode::Dialect> dialect;
   if (!a.dialect.empty()) {
     dialect = gcode::dialect_from_string(a.dialect);
@@ -421,7 +432,7 @@ int cmd_plan(const PlanArgs& a, const SolverArgs& s, const InputArgs& in_args) {
   const std::string machine = !a.machine.empty() ? a.machine
                               : dialect && !gcode::has_canned_cycles(*dialect) ? "router"
                                                                                : "vf2";
-  o.machine = app::load_machine(machine);
+  o.machine = load_machine(machine);
   o.program.dialect = dialect.value_or(o.machine.dialect);
   o.program.spindle_start_s = o.machine.spindle_start_s;
   o.program.travel_feed_mm_min = o.machine.rapid_xy_mm_min;
@@ -429,15 +440,15 @@ int cmd_plan(const PlanArgs& a, const SolverArgs& s, const InputArgs& in_args) {
   else if (a.units == "inch" || a.units == "in") o.program.units = gcode::Units::Inch;
   else throw app::UserError("--units must be mm or inch (got \"" + a.units + "\")");
   if (!a.material.empty()) {
-    auto material = app::material_from_string(a.material);
+    auto material = planning::material_from_string(a.material);
     if (!material) throw app::UserError("--material must be steel, aluminium or pcb (got \"" + a.material + "\")");
     o.material = *material;
   }
   if (a.thickness && !(*a.thickness > 0 && *a.thickness < 1000)) throw app::UserError("--thickness must be in (0, 1000) mm");
-  if (a.objective == "distance") o.objective = app::Objective::Distance;
-  else if (a.objective == "time") o.objective = app::Objective::Time;
+  if (a.objective == "distance") o.objective = planning::Objective::Distance;
+  else if (a.objective == "time") o.objective = planning::Objective::Time;
   else throw app::UserError("--objective must be distance or time (got \"" + a.objective + "\")");
-  if (!a.tools.empty()) o.tools = app::load_tool_table(a.tools);
+  if (!a.tools.empty()) o.tools = planning::parse_tool_table(app::read_file(a.tools), a.tools);
 
   app::Job job = app::load_job(a.inputs, to_input_options(in_args));
   app::LoadedHoles& loaded = job.holes;
@@ -452,8 +463,8 @@ int cmd_plan(const PlanArgs& a, const SolverArgs& s, const InputArgs& in_args) {
   const bool board = std::any_of(job.parts.begin(), job.parts.end(), [](const app::LoadedHoles& p) {
     return p.format == app::InputFormat::Excellon || p.format == app::InputFormat::Gerber;
   });
-  if (a.material.empty() && board) o.material = app::Material::Pcb;
-  o.thickness_mm = a.thickness.value_or(o.material == app::Material::Pcb ? 1.6 : 6.35);
+  if (a.material.empty() && board) o.material = planning::Material::Pcb;
+  o.thickness_mm = a.thickness.value_or(o.material == planning::Material::Pcb ? 1.6 : 6.35);
   if (loaded.holes.empty()) throw app::UserError(a.input == "-" ? "<stdin>" : a.input, 0, "no holes to drill");
   std::string source;  // the job's inputs, as messages and the program's header name them
   for (const std::string& input : a.inputs) source += (source.empty() ? "" : " + ") + (input == "-" ? std::string("<stdin>") : input);
@@ -472,18 +483,18 @@ int cmd_plan(const PlanArgs& a, const SolverArgs& s, const InputArgs& in_args) {
   // A panel: every copy of the board, in drawing coordinates, before program zero is chosen on the whole.
   std::size_t copies = 1;
   if (!a.panel.empty()) {
-    const std::vector<app::PanelCopy> placements = panel_copies(a.panel, a.pitch);
+    const std::vector<planning::PanelCopy> placements = panel_copies(a.panel, a.pitch);
     copies = placements.size();
     if (loaded.holes.size() * copies > in_args.max_holes) {
       throw app::UserError("--panel: " + std::to_string(copies) + " copies of " + std::to_string(loaded.holes.size()) +
                            " holes exceed the hole limit (--max-holes " + std::to_string(in_args.max_holes) + ")");
     }
-    loaded.holes = app::panelize(loaded.holes, placements, o.hole_source);
+    loaded.holes = planning::panelize(loaded.holes, placements, o.hole_source);
   }
   // Program zero where the machinist will set the work offset.
-  if (a.default_diameter) app::fill_missing_diameters(loaded.holes, *a.default_diameter);
-  const app::Placement placement = app::place_holes(loaded.holes, origin);
-  app::PlanResult plan = app::plan_job(loaded.holes, o, source);
+  if (a.default_diameter) planning::fill_missing_diameters(loaded.holes, *a.default_diameter);
+  const planning::Placement placement = planning::place_holes(loaded.holes, origin);
+  planning::PlanResult plan = planning::plan_job(loaded.holes, o, source);
   if (progress) std::fprintf(stderr, "\r%60s\r", "");
 
   gcode::ProgramSettings& ps = o.program;
@@ -499,8 +510,8 @@ int cmd_plan(const PlanArgs& a, const SolverArgs& s, const InputArgs& in_args) {
           gcode::format_number(plan.optimized.travel_mm, 1) + " MM",
       "ORDER: ACODRILL " + std::string(aco::to_string(plan.solver.algorithm)) + " SEED " +
           std::to_string(plan.solver.seed),
-      app::origin_comment(placement, ps.units),
-      app::zero_comment(placement)};
+      planning::origin_comment(placement, ps.units),
+      planning::zero_comment(placement)};
   if (copies > 1) {
     ps.header_comments.push_back("PANEL: " + std::to_string(copies) + " COPIES OF " + std::to_string(loaded.holes.size() / copies) +
                                  " HOLES, EACH TOOL ACROSS THE WHOLE PANEL");
@@ -519,7 +530,7 @@ int cmd_plan(const PlanArgs& a, const SolverArgs& s, const InputArgs& in_args) {
     ps.header_comments.push_back("NOT DRILLED: " + std::to_string(loaded.skipped.size() - kListed) + " MORE (SEE THE REPORT)");
   }
   std::ostringstream program;
-  const std::vector<gcode::ToolPass> passes = app::to_passes(loaded.holes, plan, o.machine);
+  const std::vector<gcode::ToolPass> passes = planning::to_passes(loaded.holes, plan, o.machine);
   try {
     gcode::write_program(program, passes, ps);
   } catch (const std::invalid_argument& e) {
@@ -590,7 +601,7 @@ int cmd_verify(const std::string& program_path, const std::vector<std::string>& 
   app::LoadedHoles expected = app::load_job(holes_paths, to_input_options(in_args)).holes;
   if (!panel.empty() || !pitch.empty()) {
     std::vector<std::uint32_t> no_sources;
-    expected.holes = app::panelize(expected.holes, panel_copies(panel, pitch), no_sources);
+    expected.holes = planning::panelize(expected.holes, panel_copies(panel, pitch), no_sources);
   }
   if (expected.program) {
     // Another program as the hole source: the same holes, tools and depths, where it put them.
@@ -609,9 +620,9 @@ int cmd_verify(const std::string& program_path, const std::vector<std::string>& 
   // --origin names, else the one the program states (acodrill writes it in its
   // header), else where they are (another CAM's program).
   if (!origin_text.empty()) {
-    app::place_holes(expected.holes, parse_origin(origin_text));
-  } else if (auto zero = app::stated_zero(text)) {
-    app::place_holes(expected.holes, app::Origin{app::OriginKind::Point, *zero});
+    planning::place_holes(expected.holes, parse_origin(origin_text));
+  } else if (auto zero = planning::stated_zero(text)) {
+    planning::place_holes(expected.holes, planning::Origin{planning::OriginKind::Point, *zero});
   }
   const std::vector<std::string> faults = app::check_drilled(run, expected.holes);
   if (faults.empty()) {
@@ -625,7 +636,7 @@ int cmd_verify(const std::string& program_path, const std::vector<std::string>& 
 }
 
 int cmd_machines(const std::string& show) {
-  for (const app::MachineClass& c : app::machine_classes()) {
+  for (const planning::MachineClass& c : planning::machine_classes()) {
     if (show.empty()) {
       std::printf("%s\t%s\n", c.name.c_str(), c.description.c_str());
     } else if (c.name == show) {
@@ -633,7 +644,7 @@ int cmd_machines(const std::string& show) {
       return 0;
     }
   }
-  if (!show.empty()) app::load_machine(show);  // names the classes there are
+  if (!show.empty()) load_machine(show);  // names the classes there are
   return 0;
 }
 

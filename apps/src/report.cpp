@@ -6,6 +6,9 @@
 
 namespace app {
 
+// The planning model's values (planning/) are what these pages and reports show.
+using namespace planning;
+
 namespace {
 double round6(double v) { return std::round(v * 1e6) / 1e6; }
 double pct_saved(double before, double after) { return before > 0 ? round6(100.0 * (before - after) / before) : 0.0; }

@@ -8,6 +8,9 @@
 
 namespace app {
 
+// The planning model's values (planning/) are what these pages and reports show.
+using namespace planning;
+
 namespace {
 
 constexpr double kMmPerInch = 25.4;

@@ -10,6 +10,9 @@
 
 namespace app {
 
+// The planning model's values (planning/) are what these pages and reports show.
+using namespace planning;
+
 namespace {
 
 // Colour-blind-safe palette (Okabe & Ito 2008) for the first eight tools;

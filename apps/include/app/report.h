@@ -6,7 +6,7 @@
 #include <utility>
 #include <vector>
 
-#include "app/plan.h"
+#include "planning/plan.h"
 #include "formats/holes.h"
 
 namespace app {
@@ -15,7 +15,7 @@ namespace app {
 struct ReportContext {
   std::string source;   // input file
   std::string program;  // output program
-  Placement placement;  // where program zero sits
+  planning::Placement placement;  // where program zero sits
   std::string name;     // job name: the input's stem or its own name
   const formats::LoadedHoles* input = nullptr;  // slots drilled, features not drilled
   // Each input of the job with its holes (the report's "sources"); empty: `source` alone.
@@ -31,8 +31,8 @@ struct ReportContext {
   std::optional<ProgramInput> program_input;
 };
 
-std::string report_json(const aco::HoleSet& holes, const PlanResult& plan, const ReportContext& context);
-std::string convergence_csv(const PlanResult& plan);
+std::string report_json(const aco::HoleSet& holes, const planning::PlanResult& plan, const ReportContext& context);
+std::string convergence_csv(const planning::PlanResult& plan);
 
 // The holes as `acodrill holes --format csv` prints them (../shared/interface.md):
 // header x_mm,y_mm,diameter_mm,layer; 6 decimals; a layer with a comma or quote quoted.

@@ -5,12 +5,12 @@
 // same plan gives the same page.
 #include <string>
 
-#include "app/plan.h"
+#include "planning/plan.h"
 #include "app/report.h"
 
 namespace app {
 
-std::string setup_sheet_html(const aco::HoleSet& holes, const PlanResult& plan, const PlanOptions& options,
+std::string setup_sheet_html(const aco::HoleSet& holes, const planning::PlanResult& plan, const planning::PlanOptions& options,
                              const ReportContext& context);
 
 }  // namespace app

@@ -3,15 +3,15 @@
 // with its direction, the start, and a legend with lengths and minutes saved.
 #include <string>
 
-#include "app/plan.h"
+#include "planning/plan.h"
 
 namespace app {
 
 // The optimized route, in program coordinates, with program zero marked.
-std::string route_svg(const aco::HoleSet& holes, const PlanResult& plan, const PlanOptions& options,
-                      const Placement& placement, const std::string& title);
+std::string route_svg(const aco::HoleSet& holes, const planning::PlanResult& plan, const planning::PlanOptions& options,
+                      const planning::Placement& placement, const std::string& title);
 // Input order and optimized order side by side.
-std::string compare_svg(const aco::HoleSet& holes, const PlanResult& plan, const PlanOptions& options,
-                        const Placement& placement, const std::string& title);
+std::string compare_svg(const aco::HoleSet& holes, const planning::PlanResult& plan, const planning::PlanOptions& options,
+                        const planning::Placement& placement, const std::string& title);
 
 }  // namespace app

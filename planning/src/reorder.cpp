@@ -1,4 +1,4 @@
-#include "app/reorder.h"
+#include "planning/reorder.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 
 #include "formats/holes.h"
 
-namespace app {
+namespace planning {
 
 namespace {
 
@@ -127,4 +127,4 @@ ReorderResult reorder_program(const gcode::DrillingProgram& input, const PlanOpt
   return r;
 }
 
-}  // namespace app
+}  // namespace planning

@@ -2,9 +2,9 @@
 // is the JSON a --machine FILE would hold, so `acodrill machines --show NAME`
 // prints a starting point for a profile of one's own; "sources" says where
 // every figure comes from.
-#include "app/plan.h"
+#include "planning/machine.h"
 
-namespace app {
+namespace planning {
 
 const std::vector<MachineClass>& machine_classes() {
   static const std::vector<MachineClass> classes = {
@@ -52,4 +52,4 @@ const std::vector<MachineClass>& machine_classes() {
   return classes;
 }
 
-}  // namespace app
+}  // namespace planning

@@ -8,10 +8,10 @@
 #include <memory>
 #include <string>
 
-#include "app/plan.h"
+#include "planning/plan.h"
 #include "gcode/drilling.h"
 
-namespace app {
+namespace planning {
 
 struct ReorderOptions {
   // Holes of a run closer than this (mm), or than the run's drill diameter
@@ -30,4 +30,4 @@ struct ReorderResult {
 ReorderResult reorder_program(const gcode::DrillingProgram& input, const PlanOptions& options,
                               const ReorderOptions& reorder);
 
-}  // namespace app
+}  // namespace planning

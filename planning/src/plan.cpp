@@ -1,0 +1,363 @@
+#include "planning/plan.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "aco/baselines.h"
+#include "json.h"
+
+namespace planning {
+
+namespace {
+
+std::string fmt3(double v) { return gcode::format_number(v, 3); }
+
+}  // namespace
+
+namespace {
+
+double xy_move_time(aco::Point2 a, aco::Point2 b, const Machine& m) {
+  const double dx = std::fabs(a.x - b.x), dy = std::fabs(a.y - b.y);
+  if (m.linear_rapids) return rapid_time_s(std::hypot(dx, dy), m.rapid_xy_mm_min, m.accel_mm_s2);
+  return std::max(rapid_time_s(dx, m.rapid_xy_mm_min, m.accel_mm_s2), rapid_time_s(dy, m.rapid_xy_mm_min, m.accel_mm_s2));
+}
+
+// Z time of one hole's cycle at the R plane: feed down, pecks, dwell, rapid out.
+double cycle_time_s(const gcode::Tool& t, const gcode::ProgramSettings& s, const Machine& m, bool retract_initial) {
+  const double depth = s.r_plane_mm - t.depth_mm;
+  double time = depth / t.feed_mm_min * 60.0;
+  const auto zr = [&](double d) { return rapid_time_s(d, m.rapid_z_mm_min, m.accel_mm_s2); };
+  if ((t.cycle == gcode::Cycle::G83 || t.cycle == gcode::Cycle::G73) && t.peck_mm > 0) {
+    const int pecks = static_cast<int>(std::ceil(depth / t.peck_mm));
+    for (int k = 1; k < pecks; ++k) {
+      const double reached = k * t.peck_mm;
+      // G83 retracts to R and comes back; G73 backs off a little.
+      time += t.cycle == gcode::Cycle::G83 ? 2.0 * zr(reached) : 2.0 * zr(0.25);
+    }
+  }
+  if (t.cycle == gcode::Cycle::G82) time += t.dwell_s;
+  time += zr(depth);  // out of the hole to R
+  if (retract_initial) time += 2.0 * zr(s.initial_z_mm - s.r_plane_mm);
+  return time;
+}
+
+}  // namespace
+
+RouteStats route_stats(const aco::HoleSet& holes, const std::vector<ToolGroup>& groups,
+                       const std::vector<const aco::Order*>& orders, const PlanOptions& options) {
+  RouteStats st;
+  const Machine& m = options.machine;
+  const auto& s = options.program;
+  TimeSplit& split = st.split;
+  // Each part is added to the total as it is added to its share, in the same order as ever.
+  auto spend = [&](double& share, double seconds) {
+    share += seconds;
+    st.time_s += seconds;
+  };
+  const bool waits_for_spindle = !gcode::has_canned_cycles(s.dialect);
+  aco::Point2 at = m.start;
+  for (std::size_t g = 0; g < groups.size(); ++g) {
+    const aco::Order& order = *orders[g];
+    const double before = st.time_s;
+    if (order.empty()) {
+      st.tool_time_s.push_back(0.0);
+      continue;
+    }
+    spend(split.tool_changes_s, m.tool_change_s);
+    if (waits_for_spindle) spend(split.pauses_s, m.spindle_start_s);
+    // Down from Z home to the initial plane, once per tool (approximate Z home as 100 mm up).
+    spend(split.moves_s, rapid_time_s(100.0, m.rapid_z_mm_min, m.accel_mm_s2));
+    for (std::size_t i = 0; i < order.size(); ++i) {
+      const aco::Point2 p = holes[order[i]].center;
+      st.travel_mm += aco::euclidean(at, p);
+      spend(split.moves_s, xy_move_time(at, p, m));
+      const bool last = i + 1 == order.size();
+      const bool clear = !last && crosses_clamp(p, holes[order[i + 1]].center, m);
+      spend(split.drilling_s, m.hit_s > 0 ? m.hit_s : cycle_time_s(groups[g].tool, s, m, !s.retract_to_r || last || clear));
+      if (i == 0) spend(split.moves_s, rapid_time_s(s.initial_z_mm - s.r_plane_mm, m.rapid_z_mm_min, m.accel_mm_s2));
+      at = p;
+    }
+    spend(split.moves_s, rapid_time_s(100.0, m.rapid_z_mm_min, m.accel_mm_s2));
+    st.tool_time_s.push_back(st.time_s - before);
+  }
+  if (options.return_at_end) {
+    const aco::Point2 finish = options.finish.value_or(m.start);
+    st.travel_mm += aco::euclidean(at, finish);
+    spend(split.moves_s, xy_move_time(at, finish, m));
+  }
+  return st;
+}
+
+namespace {
+
+// A tool group's holes as the solver sees them: one point per stop, where a
+// stop is a single hole or a whole chain. Without chains, stop i is hole i.
+struct RouteUnits {
+  std::vector<aco::Point2> points;
+  std::vector<std::size_t> begin;  // stop k drills members[begin[k] .. begin[k+1])
+  aco::Order members;              // hole indices grouped by stop, chains in their own order
+
+  aco::Order expand(const aco::Order& stops) const {
+    aco::Order out;
+    out.reserve(members.size());
+    for (aco::HoleIndex k : stops) out.insert(out.end(), members.begin() + static_cast<long>(begin[k]),
+                                              members.begin() + static_cast<long>(begin[k + 1]));
+    return out;
+  }
+};
+
+RouteUnits route_units(const aco::HoleSet& holes, const aco::Order& input_order) {
+  RouteUnits u;
+  u.points.reserve(input_order.size());
+  u.begin.reserve(input_order.size() + 1);
+  const bool chains = std::any_of(input_order.begin(), input_order.end(), [&](aco::HoleIndex h) { return holes[h].chain != 0; });
+  if (!chains) {
+    for (aco::HoleIndex h : input_order) u.points.push_back(holes[h].center);
+    u.members = input_order;
+    for (std::size_t i = 0; i <= input_order.size(); ++i) u.begin.push_back(i);
+    return u;
+  }
+  // Stops in the order of their first hole; a chain's holes keep their order.
+  std::map<std::uint32_t, std::size_t> stop_of_chain;
+  std::vector<aco::Order> stops;
+  for (aco::HoleIndex h : input_order) {
+    const std::uint32_t c = holes[h].chain;
+    if (c == 0) {
+      stops.push_back({h});
+      continue;
+    }
+    auto [it, fresh] = stop_of_chain.emplace(c, stops.size());
+    if (fresh) stops.emplace_back();
+    stops[it->second].push_back(h);
+  }
+  for (const aco::Order& stop : stops) {
+    u.begin.push_back(u.members.size());
+    aco::Point2 centroid{0, 0};
+    for (aco::HoleIndex h : stop) {
+      centroid.x += holes[h].center.x;
+      centroid.y += holes[h].center.y;
+      u.members.push_back(h);
+    }
+    u.points.push_back({centroid.x / static_cast<double>(stop.size()), centroid.y / static_cast<double>(stop.size())});
+  }
+  u.begin.push_back(u.members.size());
+  return u;
+}
+
+}  // namespace
+
+namespace {
+
+// The travel and time of each variant (input order, nearest neighbour, optimized) of the groups as they are.
+void count_variants(const aco::HoleSet& holes, PlanResult& result, const PlanOptions& options) {
+  std::vector<const aco::Order*> in, nn, opt;
+  for (const ToolGroup& g : result.groups) {
+    in.push_back(&g.input_order);
+    nn.push_back(&g.nearest_neighbor);
+    opt.push_back(&g.optimized);
+  }
+  result.input_order = route_stats(holes, result.groups, in, options);
+  result.nearest_neighbor = route_stats(holes, result.groups, nn, options);
+  result.optimized = route_stats(holes, result.groups, opt, options);
+}
+
+}  // namespace
+
+void split_worn_drills(const aco::HoleSet& holes, PlanResult& result, const PlanOptions& options) {
+  const bool any = std::any_of(result.groups.begin(), result.groups.end(), [](const ToolGroup& g) {
+    return g.tool.max_hits > 0 && g.optimized.size() > static_cast<std::size_t>(g.tool.max_hits);
+  });
+  if (!any) return;
+  int next_number = 0;
+  for (const ToolGroup& g : result.groups) next_number = std::max(next_number, g.tool.number);
+  std::vector<ToolGroup> split;
+  for (ToolGroup& g : result.groups) {
+    const std::size_t life = g.tool.max_hits > 0 ? static_cast<std::size_t>(g.tool.max_hits) : g.optimized.size();
+    if (g.optimized.size() <= life) {
+      split.push_back(std::move(g));
+      continue;
+    }
+    // The same cut in every variant, so that each is timed with the same changes.
+    auto chunk = [&](const aco::Order& order, std::size_t k) {
+      const std::size_t from = std::min(order.size(), k * life), to = std::min(order.size(), (k + 1) * life);
+      return aco::Order(order.begin() + static_cast<long>(from), order.begin() + static_cast<long>(to));
+    };
+    const std::size_t runs = (g.optimized.size() + life - 1) / life;
+    for (std::size_t k = 0; k < runs; ++k) {
+      ToolGroup part;
+      part.tool = g.tool;
+      if (k > 0) {
+        part.tool.number = ++next_number;
+        part.tool.name = gcode::tool_name(g.tool) + " SISTER OF T" + std::to_string(g.tool.number);
+      }
+      part.input_order = chunk(g.input_order, k);
+      part.nearest_neighbor = chunk(g.nearest_neighbor, k);
+      part.optimized = chunk(g.optimized, k);
+      part.solution = g.solution;
+      split.push_back(std::move(part));
+    }
+  }
+  if (next_number > 200) {
+    throw UserError("the drills' lives (max_hits) need tool numbers up to T" + std::to_string(next_number) +
+                    "; a control has T1..T200: give longer lives or split the job");
+  }
+  result.groups = std::move(split);
+  count_variants(holes, result, options);
+}
+
+void order_groups(const aco::HoleSet& holes, PlanResult& result, const PlanOptions& options) {
+  const Machine& m = options.machine;
+  const aco::Point2 finish = options.finish.value_or(m.start);
+  // Each tool's holes as an open path from where the previous tool ended; the
+  // last one ends at the start position, so the return home is optimised too.
+  const aco::Metric metric = options.objective == Objective::Time && !m.linear_rapids ? aco::Metric::Chebyshev
+                                                                                      : aco::Metric::Euclidean;
+  aco::Point2 at = m.start, at_nn = m.start;
+  result.solver = aco::resolve(options.solver, holes.size());
+  for (std::size_t g = 0; g < result.groups.size(); ++g) {
+    ToolGroup& group = result.groups[g];
+    const bool last = g + 1 == result.groups.size();
+    aco::Problem p;
+    p.metric = metric;
+    p.shape = aco::Shape::OpenPath;
+    p.start = at;
+    if (last && options.return_at_end) p.end = finish;
+    // The route's stops: a hole, or a chain (a drilled slot's holes) drilled
+    // together in its own order, stopping at the chain's centroid.
+    const RouteUnits units = route_units(holes, group.input_order);
+    p.points = units.points;
+    // --time-limit bounds the whole run: each tool gets its share by hole count.
+    aco::Params params = options.solver;
+    if (params.time_limit_s > 0) {
+      params.time_limit_s = std::max(0.01, options.solver.time_limit_s * static_cast<double>(group.input_order.size()) /
+                                               static_cast<double>(holes.size()));
+    }
+    group.solution = aco::solve(p, params);
+    group.optimized = units.expand(group.solution.order);
+    aco::Problem pnn = p;
+    pnn.start = at_nn;
+    group.nearest_neighbor = units.expand(aco::nearest_neighbor(pnn));
+    at = holes[group.optimized.back()].center;
+    at_nn = holes[group.nearest_neighbor.back()].center;
+    result.iterations += group.solution.iterations;
+    result.solver_wall_s += group.solution.wall_s;
+    if (result.thread_busy_s.size() < group.solution.thread_busy_s.size()) {
+      result.thread_busy_s.resize(group.solution.thread_busy_s.size(), 0.0);
+    }
+    for (std::size_t k = 0; k < group.solution.thread_busy_s.size(); ++k) {
+      result.thread_busy_s[k] += group.solution.thread_busy_s[k];
+    }
+  }
+  count_variants(holes, result, options);
+}
+
+PlanResult plan_job(const aco::HoleSet& holes, const PlanOptions& options, const std::string& source) {
+  const Machine& m = options.machine;
+  // A hole without a diameter would become a "0.000 MM DRILL": the user says
+  // which drill (--default-diameter), or a tool table has a tool that takes it.
+  const bool table_takes_zero =
+      options.tools && std::any_of(options.tools->entries.begin(), options.tools->entries.end(),
+                                   [](const ToolTableEntry& e) { return e.min_hole_mm <= 1e-9; });
+  for (const aco::Hole& h : holes) {
+    if (!(h.diameter > 0) && !table_takes_zero) {
+      throw UserError(source, h.source_line,
+                      "hole without a diameter; give one with --default-diameter MM, or a --tools table "
+                      "with a tool whose min_hole_mm is 0");
+    }
+  }
+  check_travel(holes, m, source);
+  for (const aco::Hole& h : holes) {
+    for (const Machine::Rect& r : m.clamps) {
+      if (h.center.x >= r.x_min && h.center.x <= r.x_max && h.center.y >= r.y_min && h.center.y <= r.y_max) {
+        throw UserError(source, h.source_line, "hole at (" + fmt3(h.center.x) + ", " + fmt3(h.center.y) +
+                                                   ") lies under a clamp of the machine profile");
+      }
+    }
+  }
+
+  ToolTable table;
+  const bool apart = options.keep_sources_apart && !options.hole_source.empty();
+  if (apart) {
+    if (options.tools) throw UserError(source, 0, "keeping inputs apart generates each input's tools; drop --tools");
+    // Each input's tools, numbered on from the previous input's.
+    const std::uint32_t sources = *std::max_element(options.hole_source.begin(), options.hole_source.end()) + 1;
+    for (std::uint32_t k = 0; k < sources; ++k) {
+      aco::HoleSet mine;
+      for (std::size_t i = 0; i < holes.size(); ++i) {
+        if (options.hole_source[i] == k) mine.push_back(holes[i]);
+      }
+      if (mine.empty()) continue;
+      ToolTable part = generate_tool_table(mine, options.material, options.thickness_mm, m);
+      for (ToolTableEntry& e : part.entries) {
+        e.tool.number = static_cast<int>(table.entries.size()) + 1;
+        e.source = static_cast<int>(k);
+        table.entries.push_back(e);
+      }
+    }
+    table.generated = true;
+  } else {
+    table = options.tools ? *options.tools : generate_tool_table(holes, options.material, options.thickness_mm, m);
+  }
+  PlanResult result;
+  result.groups.resize(table.entries.size());
+  std::vector<std::string> unfit;
+  std::size_t unfit_count = 0;
+  for (std::size_t i = 0; i < holes.size(); ++i) {
+    const double d = holes[i].diameter;
+    std::size_t chosen = table.entries.size();
+    for (std::size_t t = 0; t < table.entries.size(); ++t) {
+      if (table.entries[t].source >= 0 && static_cast<std::uint32_t>(table.entries[t].source) != options.hole_source[i]) continue;
+      if (d >= table.entries[t].min_hole_mm - 1e-9 && d <= table.entries[t].max_hole_mm + 1e-9) {
+        chosen = t;
+        break;
+      }
+    }
+    if (chosen == table.entries.size()) {
+      ++unfit_count;
+      if (unfit.size() < 5) {
+        unfit.push_back("D" + fmt3(d) + " at (" + fmt3(holes[i].center.x) + ", " + fmt3(holes[i].center.y) + ")" +
+                        (holes[i].source_line ? " line " + std::to_string(holes[i].source_line) : ""));
+      }
+      continue;
+    }
+    result.groups[chosen].input_order.push_back(static_cast<aco::HoleIndex>(i));
+  }
+  if (unfit_count > 0) {
+    std::string list;
+    for (const auto& u : unfit) list += (list.empty() ? "" : "; ") + u;
+    if (unfit_count > unfit.size()) list += "; ...";
+    throw UserError(source, 0, std::to_string(unfit_count) + " hole(s) fit no tool in the tool table: " + list);
+  }
+  for (std::size_t t = 0; t < table.entries.size(); ++t) result.groups[t].tool = table.entries[t].tool;
+  result.groups.erase(std::remove_if(result.groups.begin(), result.groups.end(),
+                                     [](const ToolGroup& g) { return g.input_order.empty(); }),
+                      result.groups.end());
+
+  order_groups(holes, result, options);
+  split_worn_drills(holes, result, options);
+  return result;
+}
+
+std::vector<gcode::ToolPass> to_passes(const aco::HoleSet& holes, const PlanResult& plan, const Machine& machine) {
+  std::vector<gcode::ToolPass> passes;
+  std::size_t index = 0;
+  for (const ToolGroup& g : plan.groups) {
+    gcode::ToolPass pass;
+    pass.tool = g.tool;
+    for (aco::HoleIndex h : g.optimized) {
+      pass.holes.push_back(holes[h].center);
+      pass.index.push_back(++index);
+    }
+    if (!machine.clamps.empty()) {
+      pass.clear_after.assign(pass.holes.size(), false);
+      for (std::size_t i = 0; i + 1 < pass.holes.size(); ++i) {
+        pass.clear_after[i] = crosses_clamp(pass.holes[i], pass.holes[i + 1], machine);
+      }
+    }
+    passes.push_back(std::move(pass));
+  }
+  return passes;
+}
+
+}  // namespace planning
