@@ -446,3 +446,18 @@ TEST(cli_test, every_tool_has_its_own_colour) {
   EXPECT_EQ(legend, 14u);
   EXPECT_EQ(fills.size(), legend) << "two tools share a colour";
 }
+
+// TSPLIB's own distances (interface: EUC_2D rounded, CEIL_2D rounded up; ATT
+// pseudo-Euclidean as TSPLIB 95 defines it): on this triangle the three give
+// 4, 6 and 3 for the only tour there is (legs sqrt 2, sqrt 2 and 2).
+TEST(cli_test, tsp_lengths_use_the_instances_own_rounding) {
+  TempDir t;
+  const std::string head = "NAME : tri\nTYPE : TSP\nDIMENSION : 3\nEDGE_WEIGHT_TYPE : ";
+  const std::string nodes = "\nNODE_COORD_SECTION\n1 0 0\n2 1 1\n3 2 0\nEOF\n";
+  for (const auto& [type, length] : {std::pair{"EUC_2D", "4"}, {"CEIL_2D", "6"}, {"ATT", "3"}}) {
+    spit(t / "tri.tsp", head + type + nodes);
+    auto r = acodrill_run("tsp " + q(t / "tri.tsp") + " -q --iterations 5");
+    EXPECT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(r.out, std::string("length ") + length + "\n") << type;
+  }
+}

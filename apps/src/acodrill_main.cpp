@@ -550,7 +550,7 @@ int cmd_tsp(const std::string& input, const std::string& tour, const SolverArgs&
   app::LoadedHoles loaded = app::load_holes(input, io);
   if (loaded.holes.empty()) throw app::UserError(input, 0, "no nodes");
   aco::Problem p;
-  p.metric = aco::Metric::TsplibEuc2d;
+  p.metric = formats::tsplib_metric(loaded);  // the instance's own rounding: EUC_2D, CEIL_2D, ATT
   p.shape = aco::Shape::ClosedTour;
   for (const aco::Hole& h : loaded.holes) p.points.push_back(h.center);
   if (!quiet && ::isatty(STDERR_FILENO)) {

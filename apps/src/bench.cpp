@@ -74,7 +74,8 @@ std::map<std::string, double> known_optima() {
   return {{"d198", 15780},     {"pcb442", 50778},  {"d493", 35002},  {"u574", 36905},   {"d657", 48912},
           {"u724", 41910},     {"pcb1173", 56892}, {"d1291", 50801}, {"fl1400", 20127}, {"d1655", 62128},
           {"pcb3038", 137694}, {"fnl4461", 182566}, {"d15112", 1573084}, {"rat783", 8806}, {"pr1002", 259045},
-          {"a280", 2579},      {"lin318", 42029},  {"att532", 27686}, {"rat575", 6773},  {"u1060", 224094}};
+          {"a280", 2579},      {"lin318", 42029},  {"att532", 27686}, {"rat575", 6773},  {"u1060", 224094},
+          {"pla7397", 23260728}, {"brd14051", 469385}};
 }
 
 BenchInstance load_instance(const std::string& path) {
@@ -84,6 +85,7 @@ BenchInstance load_instance(const std::string& path) {
   inst.path = path;
   inst.name = loaded.name;
   inst.tsplib = loaded.format == InputFormat::Tsplib;
+  inst.tsplib_metric = formats::tsplib_metric(loaded);
   for (const aco::Hole& h : loaded.holes) inst.points.push_back(h.center);
   if (inst.points.empty()) throw UserError(path, 0, "no holes");
   auto optima = known_optima();
@@ -98,7 +100,7 @@ BenchRun run_cell(const BenchInstance& inst, const BenchCell& cell, std::uint64_
   aco::Problem p;
   p.points = inst.points;
   // The thesis and TSPLIB solve closed tours; TSPLIB lengths use rounded distances.
-  p.metric = inst.tsplib ? aco::Metric::TsplibEuc2d : aco::Metric::Euclidean;
+  p.metric = inst.tsplib ? inst.tsplib_metric : aco::Metric::Euclidean;
   p.shape = aco::Shape::ClosedTour;
   BenchRun run;
   run.cell = cell;

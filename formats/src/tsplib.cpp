@@ -1,4 +1,4 @@
-// TSPLIB .tsp instances (EUC_2D): one node a hole, diameter 0; for benchmarks.
+// TSPLIB .tsp instances (EUC_2D, CEIL_2D, ATT): one node a hole, diameter 0; for benchmarks.
 #include <algorithm>
 #include <cmath>
 
@@ -6,6 +6,12 @@
 #include "text.h"
 
 namespace formats {
+
+aco::Metric tsplib_metric(const LoadedHoles& loaded) {
+  if (loaded.edge_weight_type == "CEIL_2D") return aco::Metric::TsplibCeil2d;
+  if (loaded.edge_weight_type == "ATT") return aco::Metric::TsplibAtt;
+  return aco::Metric::TsplibEuc2d;
+}
 
 LoadedHoles parse_tsplib(const std::string& path, std::string_view data) {
   LoadedHoles out;
@@ -30,8 +36,11 @@ LoadedHoles parse_tsplib(const std::string& path, std::string_view data) {
         double d;
         if (!parse_number(value, d) || d < 0) throw InputError(path, no, "DIMENSION is not a count");
         dimension = static_cast<long long>(d);
-      } else if (key == "EDGE_WEIGHT_TYPE" && value != "EUC_2D" && value != "CEIL_2D" && value != "ATT") {
-        throw InputError(path, no, "EDGE_WEIGHT_TYPE " + std::string(value) + " is not supported (EUC_2D only)");
+      } else if (key == "EDGE_WEIGHT_TYPE") {
+        if (value != "EUC_2D" && value != "CEIL_2D" && value != "ATT") {
+          throw InputError(path, no, "EDGE_WEIGHT_TYPE " + std::string(value) + " is not supported (EUC_2D, CEIL_2D, ATT)");
+        }
+        out.edge_weight_type = std::string(value);
       } else if (key == "TYPE" && value != "TSP") {
         throw InputError(path, no, "TYPE " + std::string(value) + " is not supported (TSP only)");
       } else if (colon == std::string_view::npos && key != "NODE_COORD_SECTION") {

@@ -41,12 +41,15 @@ const char* to_string(Metric metric) {
     case Metric::Chebyshev: return "chebyshev";
     case Metric::Manhattan: return "manhattan";
     case Metric::TsplibEuc2d: return "euc2d";
+    case Metric::TsplibCeil2d: return "ceil2d";
+    case Metric::TsplibAtt: return "att";
   }
   return "?";
 }
 
 std::optional<Metric> metric_from_string(const std::string& name) {
-  for (Metric m : {Metric::Euclidean, Metric::Chebyshev, Metric::Manhattan, Metric::TsplibEuc2d}) {
+  for (Metric m : {Metric::Euclidean, Metric::Chebyshev, Metric::Manhattan, Metric::TsplibEuc2d, Metric::TsplibCeil2d,
+                   Metric::TsplibAtt}) {
     if (name == to_string(m)) return m;
   }
   return std::nullopt;

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "aco/params.h"
+#include "aco/problem.h"
 #include "aco/solution.h"
 
 namespace app {
@@ -46,6 +47,7 @@ struct BenchInstance {
   std::string path, name;
   std::vector<aco::Point2> points;
   bool tsplib = false;
+  aco::Metric tsplib_metric = aco::Metric::TsplibEuc2d;  // its EDGE_WEIGHT_TYPE
   std::optional<double> optimum;
 };
 

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "aco/geometry.h"
+#include "aco/problem.h"
 #include "dxf/reader.h"
 #include "gcode/drilling.h"
 
@@ -68,6 +69,7 @@ struct LoadedHoles {
   std::size_t drilled_again = 0;
   std::size_t skipped_by_filter = 0;
   std::string name;            // TSPLIB NAME or the file's stem
+  std::string edge_weight_type;  // TSPLIB: EUC_2D (the default), CEIL_2D or ATT
   std::optional<bool> metric;  // the units the file itself is written in, where it says (Excellon)
   std::vector<Slot> slots;     // as read; parse_holes drills or skips them (SlotOptions)
   std::size_t slots_drilled = 0, slot_holes = 0;  // slots made into rows of holes, and how many holes
@@ -101,6 +103,10 @@ void apply_slot_policy(LoadedHoles& loaded, const SlotOptions& options, const st
 aco::HoleSet program_holes(const gcode::DrillingProgram& program);
 
 InputFormat detect_format(const std::string& path, std::string_view data);
+
+// The distances a TSPLIB instance's lengths are counted in: its
+// EDGE_WEIGHT_TYPE (EUC_2D rounded, CEIL_2D rounded up, ATT pseudo-Euclidean).
+aco::Metric tsplib_metric(const LoadedHoles& loaded);
 
 // Chooses the reader by content, reads, applies the layer and diameter
 // filters and drops exact duplicates (a program's are counted, not dropped). `path` names the file in messages ("-": standard input).

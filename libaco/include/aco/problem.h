@@ -22,7 +22,9 @@ enum class Metric {
   Euclidean,  // straight-line moves
   Chebyshev,  // max(|dx|, |dy|): rapids that move each axis independently at the same rate
   Manhattan,  // |dx| + |dy|: one axis after the other
-  TsplibEuc2d // TSPLIB's EUC_2D: Euclidean rounded to the nearest integer
+  TsplibEuc2d, // TSPLIB's EUC_2D: Euclidean rounded to the nearest integer
+  TsplibCeil2d, // TSPLIB's CEIL_2D: Euclidean rounded up (pla7397, pla33810, pla85900)
+  TsplibAtt    // TSPLIB's ATT: pseudo-Euclidean, sqrt(d²/10) rounded up where nint falls short
 };
 
 enum class Shape {
@@ -46,6 +48,13 @@ inline double distance(Metric metric, Point2 a, Point2 b) {
     case Metric::Chebyshev: return dx > dy ? dx : dy;
     case Metric::Manhattan: return dx + dy;
     case Metric::TsplibEuc2d: return std::floor(std::sqrt(dx * dx + dy * dy) + 0.5);  // TSPLIB's nint()
+    case Metric::TsplibCeil2d: return std::ceil(std::sqrt(dx * dx + dy * dy));
+    case Metric::TsplibAtt: {
+      // TSPLIB 95, section 2.5: r = sqrt((xd² + yd²) / 10), t = nint(r), d = t < r ? t + 1 : t.
+      const double r = std::sqrt((dx * dx + dy * dy) / 10.0);
+      const double t = std::floor(r + 0.5);
+      return t < r ? t + 1.0 : t;
+    }
   }
   return 0.0;
 }
