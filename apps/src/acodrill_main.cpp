@@ -346,7 +346,7 @@ int plan_program(const PlanArgs& a, planning::PlanOptions o, const app::LoadedHo
   }
   for (const auto& [given, name] : {std::pair{!a.tools.empty(), "--tools"}, {a.resume_from != 1, "--resume-from"},
                                     {!a.material.empty(), "--material"}, {a.thickness.has_value(), "--thickness"},
-                                    {a.default_diameter.has_value(), "--default-diameter"}}) {
+                                    {a.default_diameter.has_value(), "--default-diameter"}, {!a.panel.empty(), "--panel"}}) {
     if (given) throw app::UserError(std::string(name) + " does not apply to a program: its tools, cycles and depths are kept");
   }
   if (input.hole_count() == 0) {

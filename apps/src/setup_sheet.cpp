@@ -54,6 +54,16 @@ std::string setup_sheet_html(const aco::HoleSet& holes, const PlanResult& plan, 
     << "<tr><th>Machine</th><td>" << esc(options.machine.name) << "</td><th>Holes / tools</th><td>" << holes.size() << " / "
     << plan.groups.size() << "</td></tr>\n"
     << "</table>\n";
+  // Several files, one job; a panel of copies.
+  if (ctx.sources.size() > 1) {
+    h << "<p>Inputs:";
+    for (const auto& [file, count] : ctx.sources) h << " " << esc(file) << " (" << count << " holes);";
+    h << " holes of one diameter share a tool unless the files were kept apart.</p>\n";
+  }
+  if (ctx.panel_copies > 1) {
+    h << "<p>Panel: " << ctx.panel_copies << " copies of " << holes.size() / ctx.panel_copies
+      << " holes, each tool routed across the whole panel; program zero below is the panel's.</p>\n";
+  }
 
   h << "<div class=\"zero\">Program zero (G54 X0 Y0): " << esc(describe(pl.origin)) << " &#8212; drawing X"
     << gcode::format_number(pl.zero.x, 3) << " Y" << gcode::format_number(pl.zero.y, 3) << " mm. Holes span X"
@@ -118,6 +128,11 @@ std::string setup_sheet_html(const aco::HoleSet& holes, const PlanResult& plan, 
   split_row("Input order", in.split, in.time_s);
   split_row("This program", op.split, op.time_s);
   h << "</table>\n";
+  if (ctx.batch > 1) {
+    const double n = static_cast<double>(ctx.batch);
+    h << "<p>A batch of " << ctx.batch << (ctx.panel_copies > 1 ? " panels" : " parts") << ": <b>" << minutes(n * op.time_s)
+      << "</b> (input order " << minutes(n * in.time_s) << ", " << minutes(n * (in.time_s - op.time_s)) << " saved).</p>\n";
+  }
 
   // The route picture, to scale, in program coordinates with program zero marked.
   std::string svg = route_svg(holes, plan, options, pl, ctx.name);

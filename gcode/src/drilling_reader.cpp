@@ -185,7 +185,7 @@ class Reader {
         // so is a lone % with more of the program after it: hobby posts write
         // "%" lines as notes, and their senders skip them.
         if (trim(line.substr(1)).empty() && ++percents == 2) {
-          if (code_lines_in(text.substr(std::min(pos, text.size()))) == 0) {
+          if (code_lines_in(text.substr(std::min(pos, text.size())), true) == 0) {
             end_at("the closing %", text.substr(std::min(pos, text.size())));
             break;
           }
@@ -224,15 +224,17 @@ class Reader {
   }
 
  private:
-  // Lines with code (not blank, not only comments, not "%") in `rest`.
-  static std::size_t code_lines_in(std::string_view rest) {
+  // Lines with code (not blank, not only comments, not "%") in `rest`; with
+  // `first_only`, stops at the first (so a program of many "%" notes is read
+  // in linear time, each look ahead ending at the next line of code).
+  static std::size_t code_lines_in(std::string_view rest, bool first_only = false) {
     std::size_t count = 0;
     for (std::size_t pos = 0; pos < rest.size();) {
       std::size_t nl = rest.find('\n', pos);
       if (nl == std::string_view::npos) nl = rest.size();
       const std::string code = code_of(rest.substr(pos, nl - pos));
       std::string_view c = trim(code);
-      if (!c.empty() && c.front() != '%') ++count;
+      if (!c.empty() && c.front() != '%' && ++count && first_only) return count;
       pos = nl + 1;
     }
     return count;
