@@ -8,11 +8,11 @@ include(CMakePackageConfigHelpers)
 set(ACO_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/acodrill)
 
 install(TARGETS acodrill acobench RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
-install(TARGETS aco_geometry aco aco_dxf aco_gcode aco_formats
+install(TARGETS aco_geometry aco aco_dxf aco_gcode aco_formats aco_planning
         EXPORT acodrillTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
-foreach(dir libaco dxf gcode formats)
+foreach(dir libaco dxf gcode formats planning)
   install(DIRECTORY ${PROJECT_SOURCE_DIR}/${dir}/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 endforeach()
 install(EXPORT acodrillTargets NAMESPACE aco:: DESTINATION ${ACO_CMAKE_DIR})

@@ -1,7 +1,10 @@
-// Solves a 10-hole problem through the installed library and prints its length.
+// Solves a 10-hole problem through the installed library and prints its
+// length; then plans the same holes as a job through the installed planning
+// model (tools generated, each group ordered, timed) and prints its time.
 #include <cstdio>
 
 #include "aco/solve.h"
+#include "planning/plan.h"
 
 int main() {
   aco::Problem problem;
@@ -14,5 +17,13 @@ int main() {
   params.iterations = 50;
   const aco::Solution s = aco::solve(problem, params);
   std::printf("holes %zu length %.3f\n", s.order.size(), s.length);
-  return s.order.size() == 10 ? 0 : 1;
+
+  aco::HoleSet holes;
+  for (const auto& p : xy) holes.push_back({{p[0] * 10, p[1] * 10}, 3.0, "", 0});
+  planning::PlanOptions options;
+  options.solver.iterations = 20;
+  options.machine = *planning::builtin_machine("router");
+  const planning::PlanResult plan = planning::plan_job(holes, options, "consumer");
+  std::printf("tools %zu time %.1f s\n", plan.groups.size(), plan.optimized.time_s);
+  return s.order.size() == 10 && plan.groups.size() == 1 && plan.optimized.time_s > 0 ? 0 : 1;
 }
