@@ -610,6 +610,12 @@ TEST(linuxcnc_test, hobby_programs_say_what_they_are) {
                                       testutil::shell_quote(t / "o.nc") + " --iterations 10");
   EXPECT_EQ(notes.code, 0) << notes.err;
   EXPECT_THAT(notes.err, ::testing::HasSubstr("11 holes from g-code program"));
+  // A GRBL sender's system commands ($H, $X) in a program are read past, named in a warning.
+  testutil::spit(t / "homed.nc", "$H\n$X\nG21 G90\nM3 S9000\nG0 Z5\nG0 X10 Y10\nG1 Z-1.5 F100\nG0 Z5\nG0 X20 Y10\nG1 Z-1.5\nG0 Z5\nM5\n");
+  auto homed = testutil::acodrill_run("plan " + testutil::shell_quote(t / "homed.nc") + " -o " + testutil::shell_quote(t / "o.nc") +
+                                      " --iterations 10 --dialect grbl");
+  EXPECT_EQ(homed.code, 0) << homed.err;
+  EXPECT_THAT(homed.err, ::testing::HasSubstr("2 holes from g-code program; 2 warnings, first: 1: GRBL system command \"$H\""));
   // pcb2gcode drills one of Easy-SDR's 722 holes twice: the summary and the plan agree.
   const std::string sdr = testutil::data("real-gcode/pcb2gcode_Easy-SDR_HF_Upconverter_SMD_Gerbers.drill.ngc");
   auto p = testutil::acodrill_run("plan " + testutil::shell_quote(sdr) + " -o " + testutil::shell_quote(t / "o.nc") +

@@ -194,6 +194,11 @@ class Reader {
         }
         continue;
       }
+      if (line.front() == '$') {
+        // A GRBL system command ($H homing, $X unlock, $J= jog) some senders keep in a program: not G-code.
+        out_.notes.push_back({lineno_, "GRBL system command \"" + std::string(line.substr(0, 20)) + "\" read past"});
+        continue;
+      }
       if (auto message = pause_message(line)) {
         // Marlin's "M0 Put in the 1 mm drill": a pause and what it tells the operator.
         last_comment_ = *message;
