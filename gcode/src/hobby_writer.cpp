@@ -1,5 +1,6 @@
 #include "hobby_writer.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -31,14 +32,17 @@ std::string HobbyWriter::f(double mm_min) const {
 
 void HobbyWriter::line(const std::string& text) { out_ << text << '\n'; }
 
-void HobbyWriter::comment(const std::string& text) {
+std::string HobbyWriter::plain(const std::string& text) const {
   std::string t = comment_text(text);
-  if (dialect_ == Dialect::Marlin) {
-    for (char& c : t) c = c == ';' ? ',' : c;
-    line(("; " + t).substr(0, kMaxLine));
-  } else {
-    line("(" + t.substr(0, kMaxLine - 2) + ")");
-  }
+  // Marlin ends a line's code at ';': a message or note must not hold one.
+  if (dialect_ == Dialect::Marlin) std::replace(t.begin(), t.end(), ';', ',');
+  return t;
+}
+
+void HobbyWriter::comment(const std::string& text) {
+  const std::string t = plain(text);
+  if (dialect_ == Dialect::Marlin) line(("; " + t).substr(0, kMaxLine));
+  else line("(" + t.substr(0, kMaxLine - 2) + ")");
 }
 
 void HobbyWriter::start() {
@@ -51,11 +55,10 @@ void HobbyWriter::work_offset(int g) {
 
 void HobbyWriter::pause_for(const std::string& message, double clear_z_mm) {
   spindle_off();
-  if (coolant_) coolant_off();
+  coolant_off();
   rapid_z(clear_z_mm);
-  std::string t = comment_text(message);
+  const std::string t = plain(message);
   if (dialect_ == Dialect::Marlin) {
-    for (char& c : t) c = c == ';' ? ',' : c;
     line(("M0 " + t).substr(0, kMaxLine));
   } else {
     line("(MSG, " + t.substr(0, kMaxLine - 7) + ")");

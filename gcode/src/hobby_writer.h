@@ -48,6 +48,7 @@ class HobbyWriter {
   void end(double clear_z_mm, std::optional<aco::Point2> home);
 
  private:
+  std::string plain(const std::string& text) const;  // comment_text, and no ';' for Marlin
   std::string n(double mm) const;
   std::string f(double mm_min) const;
   void line(const std::string& text);
