@@ -13,10 +13,6 @@ namespace {
 
 std::string fmt3(double v) { return gcode::format_number(v, 3); }
 
-}  // namespace
-
-namespace {
-
 double xy_move_time(aco::Point2 a, aco::Point2 b, const Machine& m) {
   const double dx = std::fabs(a.x - b.x), dy = std::fabs(a.y - b.y);
   if (m.linear_rapids) return rapid_time_s(std::hypot(dx, dy), m.rapid_xy_mm_min, m.accel_mm_s2);
