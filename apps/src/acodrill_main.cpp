@@ -729,7 +729,7 @@ int main(int argc, char** argv) {
   plan_cmd->add_option("--units", plan.units, "Program units: mm (default; a program input keeps its own) | inch");
   plan_cmd->add_option("--tools", plan.tools, "Tool table (JSON); default: one tool per diameter");
   plan_cmd->add_option("--machine", plan.machine,
-                       "A built-in machine class (acodrill machines: vf2, router) or a profile file (JSON): rapids, "
+                       "A built-in machine class (acodrill machines: vf2, router, pcb-drill, pcb-proto) or a profile file (JSON): rapids, "
                        "acceleration, spindle range, tool change, travel; sets the time estimate, the generated "
                        "tools' speeds and the default dialect. Default: vf2");
   plan_cmd->add_option("--material", plan.material, "steel | aluminium | pcb: feeds and speeds of generated tools (default steel; pcb for Excellon and Gerber input)");

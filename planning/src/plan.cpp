@@ -331,6 +331,18 @@ PlanResult plan_job(const aco::HoleSet& holes, const PlanOptions& options, const
                       result.groups.end());
 
   order_groups(holes, result, options);
+  // Each tool's path is ordered from where the previous one ended, so on a
+  // small job a baseline can come out shorter overall (ending one tool where
+  // the next is best begun): then the better of them stands, never a worse
+  // route than one the summary shows beside it.
+  auto cost = [&](const RouteStats& r) { return options.objective == Objective::Time ? r.time_s : r.travel_mm; };
+  if (cost(result.nearest_neighbor) < cost(result.optimized) && cost(result.nearest_neighbor) <= cost(result.input_order)) {
+    for (ToolGroup& g : result.groups) g.optimized = g.nearest_neighbor;
+    result.optimized = result.nearest_neighbor;
+  } else if (cost(result.input_order) < cost(result.optimized)) {
+    for (ToolGroup& g : result.groups) g.optimized = g.input_order;
+    result.optimized = result.input_order;
+  }
   split_worn_drills(holes, result, options);
   return result;
 }
