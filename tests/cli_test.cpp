@@ -368,9 +368,10 @@ TEST(cli_test, time_split_adds_up_and_the_route_changes_only_the_moves) {
   TempDir t;
   const std::vector<std::string> boards = {data("real-excellon/altium_pic18f14k50_inch_lz_pth_npth.txt"),
                                            data("real-excellon/eagle_arduino_uno_inch_tz.drd"),
+                                           data("real-excellon/orcad_thruhole_noheader.tap"),
                                            data("kicad/kit-dev-coldfire-xilinx_5213-mm-decimal.drl")};
   for (const std::string& board : boards) {
-    for (const char* machine : {"pcb-drill", "vf2", "router"}) {
+    for (const char* machine : {"pcb-drill", "pcb-proto", "vf2", "router"}) {
       const std::string what = board + " " + machine;
       auto r = acodrill_run("plan " + q(board) + " -o " + q(t / "p.nc") + " --report " + q(t / "r.json") +
                             " -q --iterations 30 --slots skip --batch 20 --machine " + machine);
@@ -386,6 +387,10 @@ TEST(cli_test, time_split_adds_up_and_the_route_changes_only_the_moves) {
         moves[k++] = s["moves"].get<double>();
       }
       EXPECT_LE(moves[1], moves[0] + 1e-9) << what;
+      // Never a longer route than the ones reported beside it (13-hole OrCAD board: nearest neighbour is best).
+      const double travel = j["travel_mm"]["optimized"].get<double>();
+      EXPECT_LE(travel, j["travel_mm"]["input_order"].get<double>() + 1e-9) << what;
+      EXPECT_LE(travel, j["travel_mm"]["nearest_neighbor"].get<double>() + 1e-9) << what;
       for (const char* part : {"drilling", "tool_changes", "pauses"}) {
         EXPECT_NEAR(j["time_split_s"]["input_order"][part].get<double>(), j["time_split_s"]["optimized"][part].get<double>(), 1e-6)
             << what << " " << part;
