@@ -683,6 +683,10 @@ int main(int argc, char** argv) {
       "                                                            the thesis's Ant System\n"
       "  acodrill plan board.drl -o board.nc --machine router      a desktop router on GRBL: every hole as G0/G1\n"
       "                                                            moves, a pause naming each drill (--dialect marlin)\n"
+      "  acodrill plan board-PTH.drl board-NPTH.drl -o board.nc --machine pcb-drill\n"
+      "                                                            plated and non-plated holes, one program\n"
+      "  acodrill plan board.drl -o panel.nc --panel 3x2 --pitch 60,40 --batch 50\n"
+      "                                                            six boards a panel, the time for 50 panels\n"
       "  acodrill plan pcb2gcode-drill.ngc -o shorter.ngc --keep-style\n"
       "                                                            another CAM's program, its holes reordered per tool\n"
       "Inputs: DXF, Excellon, Gerber (RS-274X/X2; RS-274D with --apertures), XML hole map, CSV (x,y,diameter mm),\n"
@@ -691,16 +695,6 @@ int main(int argc, char** argv) {
                        "Input files, one job (DXF, Excellon, Gerber, XML, CSV, TSPLIB, any mix; holes of one diameter "
                        "share a tool), or one G-code program to reorder; - reads stdin")
       ->required();
-  plan_cmd->add_option("--panel", plan.panel,
-                       "Drill copies of the board as one job: COLSxROWS with --pitch DX,DY (copy (c,r) moved by "
-                       "(c*DX, r*DY) mm), or a panel file {\"copies\": [{\"x_mm\", \"y_mm\", \"rotate_deg\" 0|90|180|270, "
-                       "\"mirror\"}, ...]}. Each tool is routed across the whole panel, not board after board");
-  plan_cmd->add_option("--pitch", plan.pitch, "DX,DY in mm between panel copies (with --panel COLSxROWS)");
-  plan_cmd->add_option("--batch", plan.batch, "Report the time for N panels (or parts) run one after another (default 1)")
-      ->check(CLI::Range(std::size_t{1}, std::size_t{1000000}));
-  plan_cmd->add_flag("--keep-files-apart", plan.keep_files_apart,
-                     "Several inputs: each file's holes get tools of their own, drilled file after file (plated and "
-                     "non-plated holes at different steps of the process)");
   plan_cmd->add_option("-o,--output", plan.output, "Program to write (- = stdout)")->required();
   plan_cmd->add_option("--report", plan.report, "Write a JSON report: holes, tools, travel, time, solver");
   plan_cmd->add_option("--svg", plan.svg, "Write a picture of the route (SVG)");
@@ -745,6 +739,16 @@ int main(int argc, char** argv) {
   plan_cmd->add_option("--resume-from", plan.resume_from, "Drill holes N, N+1, ... of the same order (default 1)")
       ->check(CLI::Range(std::size_t{1}, std::size_t{100'000'000}));
   plan_cmd->add_option("--program-number", plan.program_number, "O-number (default 1001)")->check(CLI::Range(1, 99999));
+  plan_cmd->add_option("--panel", plan.panel,
+                       "Drill copies of the board as one job: COLSxROWS with --pitch DX,DY (copy (c,r) moved by "
+                       "(c*DX, r*DY) mm), or a panel file {\"copies\": [{\"x_mm\", \"y_mm\", \"rotate_deg\" 0|90|180|270, "
+                       "\"mirror\"}, ...]}. Each tool is routed across the whole panel, not board after board");
+  plan_cmd->add_option("--pitch", plan.pitch, "DX,DY in mm between panel copies (with --panel COLSxROWS)");
+  plan_cmd->add_option("--batch", plan.batch, "Report the time for N panels (or parts) run one after another (default 1)")
+      ->check(CLI::Range(std::size_t{1}, std::size_t{1000000}));
+  plan_cmd->add_flag("--keep-files-apart", plan.keep_files_apart,
+                     "Several inputs: each file's holes get tools of their own, drilled file after file (plated and "
+                     "non-plated holes at different steps of the process)");
   plan_cmd->add_flag("-q,--quiet", plan.quiet, "Print nothing on success");
   add_solver_options(plan_cmd, solver);
   add_input_options(plan_cmd, in_args);
