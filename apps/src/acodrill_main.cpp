@@ -142,10 +142,12 @@ app::InputOptions to_input_options(const InputArgs& a) {
 }
 
 // `skipped_label` says what became of what the input holds but the holes leave out.
+// `holes`: how many holes to say the input gave (default: those it holds; a
+// file of a several-file job has handed its holes to the job).
 void print_warnings(const app::LoadedHoles& loaded, const std::string& path, bool quiet,
-                    const char* skipped_label = "NOT DRILLED") {
+                    const char* skipped_label = "NOT DRILLED", std::optional<std::size_t> holes = std::nullopt) {
   if (quiet) return;
-  std::string summary = std::to_string(loaded.holes.size()) + " holes from " + std::string(formats::to_string(loaded.format));
+  std::string summary = std::to_string(holes.value_or(loaded.holes.size())) + " holes from " + std::string(formats::to_string(loaded.format));
   if (loaded.duplicates_removed) summary += ", " + std::to_string(loaded.duplicates_removed) + " duplicates removed";
   if (loaded.drilled_again) {
     summary += ", " + std::to_string(loaded.drilled_again) + " drilled again at the same place (kept, as the program drills them)";
@@ -271,9 +273,7 @@ int finish_plan(const PlanArgs& a, const std::string& program_text, const aco::H
   if (!a.quiet) {
     if (job) {
       for (std::size_t k = 0; k < job->parts.size(); ++k) {
-        app::LoadedHoles part = job->parts[k];
-        part.holes.resize(job->sources[k].holes);  // the count the summary gives: what this file adds to the job
-        print_warnings(part, job->sources[k].file, a.quiet);
+        print_warnings(job->parts[k], job->sources[k].file, a.quiet, "NOT DRILLED", job->sources[k].holes);
       }
       if (job->parts.size() > 1 && loaded.duplicates_removed) {
         std::fprintf(stderr, "acodrill: %zu hole(s) in more than one input drilled once\n", loaded.duplicates_removed);

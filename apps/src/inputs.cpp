@@ -27,6 +27,7 @@ Job load_job(const std::vector<std::string>& paths, const InputOptions& options)
   }
   LoadedHoles& all = job.holes;
   std::vector<std::string> stems;
+  std::uint32_t chain_base = 0;  // the highest slot chain number of the files before
   for (std::size_t k = 0; k < paths.size(); ++k) {
     LoadedHoles part = load_holes(paths[k], options);
     const std::string shown = paths[k] == "-" ? "<stdin>" : paths[k];
@@ -40,16 +41,15 @@ Job load_job(const std::vector<std::string>& paths, const InputOptions& options)
     } else if (all.drill_function != part.drill_function) {
       all.drill_function.clear();  // plated and non-plated together: no one function
     }
+    // Chains (a drilled slot's holes) stay apart from the other files' chains.
+    std::uint32_t top = chain_base;
     for (aco::Hole& h : part.holes) {
+      if (h.chain != 0) h.chain += chain_base;
+      top = std::max(top, h.chain);
       all.holes.push_back(h);
       job.hole_source.push_back(static_cast<std::uint32_t>(k));
     }
-    // Chains (a drilled slot's holes) stay apart from the other files' chains.
-    std::uint32_t chain_base = 0;
-    for (std::size_t i = 0; i + part.holes.size() < all.holes.size(); ++i) chain_base = std::max(chain_base, all.holes[i].chain);
-    for (std::size_t i = all.holes.size() - part.holes.size(); i < all.holes.size(); ++i) {
-      if (all.holes[i].chain != 0) all.holes[i].chain += chain_base;
-    }
+    chain_base = top;
     for (const Note& n : part.skipped) all.skipped.push_back({n.line, shown + ": " + n.message});
     for (const Note& n : part.warnings) all.warnings.push_back({n.line, shown + ": " + n.message});
     all.duplicates_removed += part.duplicates_removed;

@@ -19,6 +19,7 @@ namespace gcode {
 namespace {
 
 constexpr double kTiny = 1e-9;
+constexpr double kAtHome = std::numeric_limits<double>::infinity();  // Z at machine home: above everything
 
 struct Word {
   char letter;
@@ -519,9 +520,9 @@ class Reader {
       // Hobby posts travel between holes with G1 well above the part: above
       // the top of the stock (Z > 0), or where the last hole's feed began.
       // Z not known after a move to machine Z home: the spindle is at the top.
-      const std::optional<double> low = nz && z_ ? std::min(*nz, *z_) : z_ ? z_ : z_homed_ ? nz : std::nullopt;
-      const bool above = (!z_ && z_homed_ && !nz) ||
-                         (low && (*low > kTiny || (feed_start_z_ && *low >= *feed_start_z_ - kTiny)));
+      std::optional<double> low = z_ ? z_ : z_homed_ ? std::optional<double>(kAtHome) : std::nullopt;
+      if (low && nz) low = std::min(*low, *nz);
+      const bool above = low && (*low > kTiny || (feed_start_z_ && *low >= *feed_start_z_ - kTiny));
       if (!above) {
         if (options_.drilling_only) {
           refuse("G1 moves in X/Y at Z" + (z_ ? format_number(*z_, 3) : std::string(" unknown")) +

@@ -192,17 +192,12 @@ void write_dialect(std::ostream& out, const DrillingProgram& p, const DrillingWr
 // holes at the run's travel plane and changes tools at the highest of them.
 void write_hobby(std::ostream& out, const DrillingProgram& p, const DrillingWriteSettings& s) {
   HobbyWriter w(out, s.dialect, s.inch, s.decimals, s.travel_feed_mm_min);
-  w.comment(s.program_name + " - FOR " + (s.dialect == Dialect::Grbl ? "GRBL 1.1" : "MARLIN"));
-  for (const std::string& text : s.header_comments) w.comment(text);
-  auto size = [&](double mm) { return format_number(s.inch ? mm / kMmPerInch : mm, s.inch ? 4 : 3) + (s.inch ? " IN" : " MM"); };
+  w.header(s.program_name, s.header_comments);
   double clear_z = -std::numeric_limits<double>::infinity();
   for (const ToolRun& run : p.runs) {
     if (run.holes.empty()) continue;
     clear_z = std::max(clear_z, travel_of(run).z_mm);
-    if (run.tool > 0) {
-      w.comment("T" + std::to_string(run.tool) + (run.diameter_mm ? " D=" + size(*run.diameter_mm) : "") + " - " +
-                std::to_string(run.holes.size()) + " HOLES");
-    }
+    if (run.tool > 0) w.tool_line(run.tool, run.diameter_mm, "", run.holes.size());
   }
   w.start();
   std::optional<int> tool_in;
@@ -213,7 +208,7 @@ void write_hobby(std::ostream& out, const DrillingProgram& p, const DrillingWrit
               std::to_string(run.holes.size()) + " HOLES" + (run.message.empty() ? "" : ": " + run.message));
     if (!tool_in || *tool_in != run.tool || run.pause) {
       const std::string drill = run.tool > 0 ? "T" + std::to_string(run.tool) : std::string("THE DRILL");
-      w.pause_for("PUT IN " + drill + (run.diameter_mm ? " " + size(*run.diameter_mm) + " DRILL" : "") +
+      w.pause_for("PUT IN " + drill + (run.diameter_mm ? " " + w.size(*run.diameter_mm) + " DRILL" : "") +
                       ", ZERO Z ON THE PART TOP, RESUME",
                   clear_z);
       tool_in = run.tool;

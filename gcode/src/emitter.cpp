@@ -146,14 +146,9 @@ HoleCycle cycle_of(const Tool& t, const ProgramSettings& s) {
 void write_hobby_program(std::ostream& out, const std::vector<ToolPass>& passes, const ProgramSettings& s) {
   const bool inch = s.units == Units::Inch;
   HobbyWriter w(out, s.dialect, inch, inch ? 4 : 3, s.travel_feed_mm_min);
-  w.comment(s.program_name + " - FOR " + (s.dialect == Dialect::Grbl ? "GRBL 1.1" : "MARLIN"));
-  for (const std::string& text : s.header_comments) w.comment(text);
+  w.header(s.program_name, s.header_comments);
   if (s.resume_from > 1) w.comment("RESUMED AT HOLE " + std::to_string(s.resume_from));
-  auto size = [&](double mm) { return format_number(inch ? mm / 25.4 : mm, inch ? 4 : 3) + (inch ? " IN" : " MM"); };
-  for (const ToolPass& p : passes) {
-    w.comment("T" + std::to_string(p.tool.number) + " D=" + size(p.tool.diameter_mm) + " - " + tool_name(p.tool) + " - " +
-              std::to_string(p.holes.size()) + " HOLES");
-  }
+  for (const ToolPass& p : passes) w.tool_line(p.tool.number, p.tool.diameter_mm, tool_name(p.tool), p.holes.size());
   w.comment("EACH TOOL: A PAUSE TO PUT IN ITS DRILL AND ZERO Z ON THE PART TOP");
   w.start();
   w.rapid_z(s.initial_z_mm);
@@ -167,15 +162,17 @@ void write_hobby_program(std::ostream& out, const std::vector<ToolPass>& passes,
                 s.initial_z_mm);
     w.select_tool(t.number);
     w.spindle_on(3, t.spindle_rpm, s.spindle_start_s);
+    // As G99/G98: back to R between holes, to the initial plane after a
+    // tool's last hole and before a move over a clamp. Every hole of the
+    // tool is one of these two.
     const HoleCycle cycle = cycle_of(t, s);
+    const std::vector<ZMove> to_r = expand_cycle(cycle, s.r_plane_mm, 0);
+    const std::vector<ZMove> to_initial = expand_cycle(cycle, s.initial_z_mm, 0);
     for (std::size_t i = first; i < p.holes.size(); ++i) {
       const bool last = i + 1 == p.holes.size();
       const bool clear = i < p.clear_after.size() && p.clear_after[i];
-      // As G99/G98: back to R between holes, to the initial plane after a
-      // tool's last hole and before a move over a clamp.
-      const double retract = !s.retract_to_r || last || clear ? s.initial_z_mm : s.r_plane_mm;
       w.comment("HOLE " + std::to_string(p.index[i]));
-      w.hole(p.holes[i], expand_cycle(cycle, retract, 0), s.r_plane_mm);
+      w.hole(p.holes[i], !s.retract_to_r || last || clear ? to_initial : to_r, s.r_plane_mm);
     }
   }
   w.end(s.initial_z_mm, s.home);

@@ -45,6 +45,20 @@ void HobbyWriter::comment(const std::string& text) {
   else line("(" + t.substr(0, kMaxLine - 2) + ")");
 }
 
+void HobbyWriter::header(const std::string& program_name, const std::vector<std::string>& comments) {
+  comment(program_name + " - FOR " + (dialect_ == Dialect::Grbl ? "GRBL 1.1" : "MARLIN"));
+  for (const std::string& text : comments) comment(text);
+}
+
+std::string HobbyWriter::size(double mm) const {
+  return format_number(inch_ ? mm / kMmPerInch : mm, inch_ ? 4 : 3) + (inch_ ? " IN" : " MM");
+}
+
+void HobbyWriter::tool_line(int tool, std::optional<double> diameter_mm, const std::string& what, std::size_t holes) {
+  comment("T" + std::to_string(tool) + (diameter_mm ? " D=" + size(*diameter_mm) : std::string()) +
+          (what.empty() ? std::string() : " - " + what) + " - " + std::to_string(holes) + " HOLES");
+}
+
 void HobbyWriter::start() {
   line(std::string(inch_ ? "G20" : "G21") + " G90" + (dialect_ == Dialect::Grbl ? " G94 G17" : ""));
 }

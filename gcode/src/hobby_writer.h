@@ -29,6 +29,12 @@ class HobbyWriter {
   HobbyWriter(std::ostream& out, Dialect dialect, bool inch, int decimals, double travel_feed_mm_min);
 
   void comment(const std::string& text);
+  // The program's title ("NAME - FOR GRBL 1.1") and its header comments.
+  void header(const std::string& program_name, const std::vector<std::string>& comments);
+  // One line of the tool list: "T2 D=1.000 MM - 1.000 MM DRILL - 14 HOLES" (`what` may be empty).
+  void tool_line(int tool, std::optional<double> diameter_mm, const std::string& what, std::size_t holes);
+  // "1.000 MM" or "0.0394 IN": a size as the operator reads it in the program's units.
+  std::string size(double mm) const;
   void start();                                 // units, absolute, plane
   void work_offset(int g);                      // G54..G59 (G54 is the default: not written)
   // Spindle off, up to `clear_z`, the message, the pause (M0). GRBL senders
