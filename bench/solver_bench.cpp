@@ -99,7 +99,7 @@ void BM_one_ant_tour_reference(benchmark::State& state) {
 
 // One pass from a nearest-neighbour tour; the route is rebuilt every iteration
 // so no state carries over.
-void local_search_pass(benchmark::State& state, bool or_opt) {
+void local_search_pass(benchmark::State& state, aco::detail::Moves moves) {
   aco::Problem p = make_problem(static_cast<std::size_t>(state.range(0)));
   aco::detail::Space space(p);
   auto cand = aco::detail::build_candidates(space, 12);
@@ -107,13 +107,14 @@ void local_search_pass(benchmark::State& state, bool or_opt) {
   aco::detail::LocalSearcher ls(space, cand);
   for (auto _ : state) {
     std::vector<aco::HoleIndex> route(nn.begin(), nn.end());
-    ls.improve(route, or_opt);
+    ls.improve(route, moves);
     benchmark::DoNotOptimize(route.data());
   }
 }
 
-void BM_two_opt_neighbour_lists(benchmark::State& state) { local_search_pass(state, false); }
-void BM_two_opt_or_opt_neighbour_lists(benchmark::State& state) { local_search_pass(state, true); }
+void BM_two_opt_neighbour_lists(benchmark::State& state) { local_search_pass(state, aco::detail::Moves::TwoOpt); }
+void BM_two_opt_or_opt_neighbour_lists(benchmark::State& state) { local_search_pass(state, aco::detail::Moves::OrOpt); }
+void BM_three_opt_neighbour_lists(benchmark::State& state) { local_search_pass(state, aco::detail::Moves::ThreeOpt); }
 
 void BM_two_opt_reference_full_scan(benchmark::State& state) {
   // First-improvement 2-opt over all pairs until no move gains: the textbook O(n²) per pass.
@@ -175,6 +176,7 @@ BENCHMARK(BM_one_ant_tour_ours)->RangeMultiplier(4)->Range(64, 16384);
 BENCHMARK(BM_one_ant_tour_reference)->RangeMultiplier(4)->Range(64, 4096);
 BENCHMARK(BM_two_opt_neighbour_lists)->RangeMultiplier(4)->Range(64, 16384);
 BENCHMARK(BM_two_opt_or_opt_neighbour_lists)->RangeMultiplier(4)->Range(64, 16384);
+BENCHMARK(BM_three_opt_neighbour_lists)->RangeMultiplier(4)->Range(64, 16384);
 BENCHMARK(BM_two_opt_reference_full_scan)->RangeMultiplier(4)->Range(64, 1024);
 BENCHMARK(BM_pheromone_update_candidate_edges)->RangeMultiplier(4)->Range(64, 16384);
 BENCHMARK(BM_pheromone_update_reference_dense)->RangeMultiplier(4)->Range(64, 4096);

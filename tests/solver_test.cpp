@@ -46,7 +46,8 @@ aco::Params quick(aco::Algorithm a, aco::LocalSearch ls = aco::LocalSearch::TwoO
 
 const aco::Algorithm kAll[] = {aco::Algorithm::AntSystem, aco::Algorithm::MaxMinAntSystem,
                                aco::Algorithm::AntColonySystem, aco::Algorithm::FocusedAcs};
-const aco::LocalSearch kAllLs[] = {aco::LocalSearch::None, aco::LocalSearch::TwoOpt, aco::LocalSearch::TwoOptOrOpt};
+const aco::LocalSearch kAllLs[] = {aco::LocalSearch::None, aco::LocalSearch::TwoOpt, aco::LocalSearch::TwoOptOrOpt,
+                                   aco::LocalSearch::ThreeOpt};
 
 }  // namespace
 

@@ -42,7 +42,7 @@ int main(int argc, char** argv) {
                "  acobench --preset thesis --quick --out thesis.csv     the thesis's experiments 1-5, tables 4.1-4.15\n",
                "acobench"};
   cli.set_version_flag("--version", std::string("acobench ") + ACO_VERSION);
-  std::vector<std::string> instances, algorithms{"focused"}, local_search{"2opt+oropt"};
+  std::vector<std::string> instances, algorithms{"focused"}, local_search{"3opt"};
   std::vector<double> alphas{1.0}, betas{-1.0}, rhos{-1.0}, time_limits{0.0};
   std::vector<int> ants{0}, iterations{0}, threads;
   int seeds = 1;
@@ -58,7 +58,7 @@ int main(int argc, char** argv) {
   cli.add_option("--iterations", iterations, "Iteration counts (default: 300 or until the time limit)")->delimiter(',');
   cli.add_option("--threads", threads, "Thread counts (default: 1 and all cores)")->delimiter(',');
   cli.add_option("--time-limit", time_limits, "Time limits per run in seconds (0 = none)")->delimiter(',');
-  cli.add_option("--local-search", local_search, "none, 2opt, 2opt+oropt")->delimiter(',');
+  cli.add_option("--local-search", local_search, "none, 2opt, 2opt+oropt, 3opt (default: 2-opt, Or-opt and 3-opt with deeper Lin-Kernighan steps)")->delimiter(',');
   cli.add_option("--seeds", seeds, "Runs per cell, seeds 1..N (default 1)")->check(CLI::Range(1, 100000));
   cli.add_option("--out", out, "runs.csv: one row per run (required for a grid; optional with --preset)");
   cli.add_option("--summary", summary, "summary.csv: one row per cell");

@@ -81,7 +81,7 @@ Order improve(const Problem& problem, Order order, bool or_opt) {
   detail::Candidates cand = detail::build_candidates(space, 10);
   detail::LocalSearcher ls(space, cand);
   std::vector<HoleIndex> route = to_route(space, order);
-  ls.improve(route, or_opt);
+  ls.improve(route, or_opt ? detail::Moves::OrOpt : detail::Moves::TwoOpt);
   return from_route(space, route);
 }
 

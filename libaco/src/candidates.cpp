@@ -1,6 +1,9 @@
 #include "candidates.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
 #include <nanoflann.hpp>
 #include <numeric>
 #include <utility>
@@ -61,6 +64,167 @@ Candidates build_candidates(const Space& space, int k) {
     for (int r = 0; r < c.k; ++r) out[r] = row[r].second;
   }
   return c;
+}
+
+Candidates alpha_candidates(const Space& space, const Candidates& nearest, int k, int ascent_iterations) {
+
+  const HoleIndex n = space.holes();
+  Candidates out;
+  out.k = std::min(k, nearest.k);
+  out.list.assign(static_cast<std::size_t>(n) * out.k, 0);
+  if (out.k == 0) return out;
+  // The neighbour graph, each edge once.
+  struct Edge {
+    double cost;
+    HoleIndex a, b;
+  };
+  std::vector<Edge> edges;
+  edges.reserve(static_cast<std::size_t>(n) * nearest.k);
+  for (HoleIndex i = 0; i < n; ++i) {
+    const HoleIndex* row = nearest.of(i);
+    for (int r = 0; r < nearest.k; ++r) edges.push_back({0.0, std::min(i, row[r]), std::max(i, row[r])});
+  }
+  std::sort(edges.begin(), edges.end(), [](const Edge& x, const Edge& y) { return x.a != y.a ? x.a < y.a : x.b < y.b; });
+  edges.erase(std::unique(edges.begin(), edges.end(), [](const Edge& x, const Edge& y) { return x.a == y.a && x.b == y.b; }),
+              edges.end());
+  std::vector<double> length(edges.size());
+  for (std::size_t e = 0; e < edges.size(); ++e) length[e] = space.d(edges[e].a, edges[e].b);
+  // Kruskal with costs d(a, b) + pi[a] + pi[b]; returns the forest's cost.
+  std::vector<HoleIndex> root(n);
+  std::vector<std::size_t> in_tree;
+  auto find = [&](HoleIndex x) {
+    while (root[x] != x) x = root[x] = root[root[x]];
+    return x;
+  };
+  std::vector<std::pair<double, std::uint32_t>> order(edges.size());
+  auto forest = [&](const std::vector<double>& pi) {
+    for (std::size_t e = 0; e < edges.size(); ++e) {
+      edges[e].cost = length[e] + pi[edges[e].a] + pi[edges[e].b];
+      order[e] = {edges[e].cost, static_cast<std::uint32_t>(e)};
+    }
+    std::sort(order.begin(), order.end());
+    std::iota(root.begin(), root.end(), 0);
+    in_tree.clear();
+    double total = 0.0;
+    for (auto [cost, e] : order) {
+      const HoleIndex ra = find(edges[e].a), rb = find(edges[e].b);
+      if (ra == rb) continue;
+      root[ra] = rb;
+      in_tree.push_back(e);
+      total += edges[e].cost;
+    }
+    return total;
+  };
+  // Subgradient ascent (Held & Karp 1970, as LKH runs it): raise pi on holes
+  // the tree leaves as leaves, lower it where the tree branches, so the tree
+  // looks more like a tour and alpha more like what a tour needs.
+  std::vector<double> pi(n, 0.0), best_pi(n, 0.0), degree(n), last_v(n, 0.0);
+  double best_w = -std::numeric_limits<double>::infinity();
+  double step = 0.0;
+  // The step shrinks to 5 % of its first size by the last iteration.
+  const double decay = std::pow(0.05, 1.0 / std::max(1, ascent_iterations));
+  for (int it = 0; it < ascent_iterations; ++it) {
+    const double w = forest(pi) - 2.0 * std::accumulate(pi.begin(), pi.end(), 0.0);
+    if (it == 0) {
+      double mean = 0.0;
+      for (std::size_t e : in_tree) mean += length[e];
+      step = 0.1 * mean / std::max<std::size_t>(1, in_tree.size());
+    }
+    if (w > best_w) {
+      best_w = w;
+      best_pi = pi;
+    }
+    std::fill(degree.begin(), degree.end(), 0.0);
+    for (std::size_t e : in_tree) {
+      degree[edges[e].a] += 1;
+      degree[edges[e].b] += 1;
+    }
+    double norm = 0.0;
+    for (HoleIndex i = 0; i < n; ++i) {
+      const double v = degree[i] - 2.0;
+      norm += v * v;
+      pi[i] += step * (0.7 * v + 0.3 * last_v[i]);
+      last_v[i] = v;
+    }
+    if (norm == 0.0) break;
+    step *= decay;
+  }
+  pi = best_pi;
+  forest(pi);
+  std::vector<std::vector<std::pair<HoleIndex, double>>> tree(n);
+  for (std::size_t e : in_tree) {
+    tree[edges[e].a].push_back({edges[e].b, edges[e].cost});
+    tree[edges[e].b].push_back({edges[e].a, edges[e].cost});
+  }
+  // Root each tree; binary lifting gives the longest edge on any tree path in O(log n).
+  int levels = 1;
+  while ((HoleIndex{1} << levels) < n) ++levels;
+  std::vector<HoleIndex> up(static_cast<std::size_t>(levels) * n);
+  std::vector<double> longest(static_cast<std::size_t>(levels) * n, 0.0);
+  std::vector<int> depth(n, -1);
+  std::vector<HoleIndex> stack;
+  for (HoleIndex s = 0; s < n; ++s) {
+    if (depth[s] >= 0) continue;
+    depth[s] = 0;
+    up[s] = s;
+    stack.push_back(s);
+    while (!stack.empty()) {
+      const HoleIndex u = stack.back();
+      stack.pop_back();
+      for (auto [w, d] : tree[u]) {
+        if (depth[w] >= 0) continue;
+        depth[w] = depth[u] + 1;
+        up[w] = u;
+        longest[w] = d;
+        stack.push_back(w);
+      }
+    }
+  }
+  for (int l = 1; l < levels; ++l) {
+    const std::size_t cur = static_cast<std::size_t>(l) * n, prev = cur - n;
+    for (HoleIndex v = 0; v < n; ++v) {
+      const HoleIndex mid = up[prev + v];
+      up[cur + v] = up[prev + mid];
+      longest[cur + v] = std::max(longest[prev + v], longest[prev + mid]);
+    }
+  }
+  auto path_longest = [&](HoleIndex a, HoleIndex b) {
+    double m = 0.0;
+    if (depth[a] < depth[b]) std::swap(a, b);
+    for (int l = levels - 1; l >= 0; --l) {
+      const std::size_t at = static_cast<std::size_t>(l) * n;
+      if (depth[a] - (1 << l) >= depth[b]) {
+        m = std::max(m, longest[at + a]);
+        a = up[at + a];
+      }
+    }
+    if (a == b) return m;
+    for (int l = levels - 1; l >= 0; --l) {
+      const std::size_t at = static_cast<std::size_t>(l) * n;
+      if (up[at + a] != up[at + b]) {
+        m = std::max({m, longest[at + a], longest[at + b]});
+        a = up[at + a];
+        b = up[at + b];
+      }
+    }
+    if (up[a] != up[b]) return -1.0;  // different trees
+    return std::max({m, longest[a], longest[b]});
+  };
+  std::vector<std::pair<double, int>> row;
+  for (HoleIndex i = 0; i < n; ++i) {
+    const HoleIndex* nr = nearest.of(i);
+    row.clear();
+    for (int r = 0; r < nearest.k; ++r) {
+      const double m = path_longest(i, nr[r]);
+      const double c = space.d(i, nr[r]) + pi[i] + pi[nr[r]];
+      row.push_back({m < 0 ? 0.0 : c - m, r});
+    }
+    std::stable_sort(row.begin(), row.end());
+    std::sort(row.begin(), row.begin() + out.k, [](auto x, auto y) { return x.second < y.second; });
+    HoleIndex* o = out.list.data() + static_cast<std::size_t>(i) * out.k;
+    for (int r = 0; r < out.k; ++r) o[r] = nr[row[r].second];
+  }
+  return out;
 }
 
 }  // namespace aco::detail

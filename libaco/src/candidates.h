@@ -17,4 +17,15 @@ struct Candidates {
 
 Candidates build_candidates(const Space& space, int k);
 
+// For each hole, the k holes of `nearest`'s row with the smallest
+// alpha-nearness (Helsgaun 2000, LKH's candidates): alpha(i, j) = c(i, j)
+// minus the longest edge on the path from i to j in a minimum spanning tree,
+// i.e. how much longer the tree must get to hold edge (i, j), with costs
+// c(i, j) = d(i, j) + pi[i] + pi[j] from `ascent_iterations` steps of Held and
+// Karp's subgradient ascent, which make the tree look like a tour. Ties keep
+// the nearer hole first; each row is then sorted by distance, which the local
+// search's pruning needs. Where the neighbour graph falls apart into several
+// trees, an edge between two of them has alpha 0. Memory O(n k + n log n).
+Candidates alpha_candidates(const Space& space, const Candidates& nearest, int k, int ascent_iterations);
+
 }  // namespace aco::detail

@@ -48,6 +48,21 @@ using detail::Space;
 // Up to this many holes the candidate list is every other hole (the exact Ant System).
 constexpr std::size_t kFullListLimit = 800;
 
+// With local search, above kFullListLimit, the candidates are the
+// p.candidates (default 5) alpha-nearest among each hole's kAlphaFrom
+// nearest (LKH's candidates): on pcb3038 at 5 s (median of 3 seeds, 3-opt)
+// 0.28 % with the 12 nearest, 0.25 % with 8 alpha-nearest without the
+// ascent, 0.17 % with it, 0.12 % with 5.
+constexpr int kAlphaFrom = 16;
+// Above this many holes the nearest are taken as they are: the ascent's
+// sorts and the tree's O(n log n) ancestor table stop paying for themselves.
+constexpr std::size_t kAlphaLimit = 200000;
+// Subgradient steps before alpha is measured: 100 took 0.1 s on pcb3038 and
+// 1.5 s on d15112, so fewer on larger inputs (66 on d15112, 20 from 50 000).
+int ascent_iterations(std::size_t holes) {
+  return static_cast<int>(std::clamp<std::size_t>(1000000 / std::max<std::size_t>(holes, 1), 20, 100));
+}
+
 // FocusedAcs, chosen by measurement on pcb442, pcb1173 and pcb3038 (median gap
 // at fixed budgets, docs/benchmarks.md): at each step of its walk an ant
 // leaves the reference route with this probability (until it has made
@@ -124,8 +139,14 @@ class Colony {
  public:
   Colony(const Problem& problem, const Params& params)
       : problem_(problem), p_(params), space_(problem), n_(space_.holes()) {
-    const int k = n_ <= kFullListLimit ? static_cast<int>(n_) - 1 : p_.candidates;
-    cand_ = detail::build_candidates(space_, k);
+    if (n_ <= kFullListLimit) {
+      cand_ = detail::build_candidates(space_, static_cast<int>(n_) - 1);
+    } else if (p_.local_search != LocalSearch::None && n_ <= kAlphaLimit) {
+      cand_ = detail::alpha_candidates(space_, detail::build_candidates(space_, kAlphaFrom), p_.candidates,
+                                       ascent_iterations(n_));
+    } else {
+      cand_ = detail::build_candidates(space_, p_.candidates);
+    }
     k_ = cand_.k;
     const std::size_t slots = static_cast<std::size_t>(n_) * k_;
     tau_ = detail::Trail(slots, 0.0, p_.rho);
@@ -526,10 +547,12 @@ Solution Colony::run() {
   best_route.insert(best_route.end(), nn.begin(), nn.end());
   const double c_nn = std::max(space_.route_cost(best_route), 1e-9);
   const bool use_ls = p_.local_search != LocalSearch::None;
-  const bool or_opt = p_.local_search == LocalSearch::TwoOptOrOpt;
+  const detail::Moves moves = p_.local_search == LocalSearch::ThreeOpt      ? detail::Moves::ThreeOpt
+                              : p_.local_search == LocalSearch::TwoOptOrOpt ? detail::Moves::OrOpt
+                                                                            : detail::Moves::TwoOpt;
   if (use_ls) {
     LocalSearcher ls(space_, cand_);
-    ls.improve(best_route, or_opt);
+    ls.improve(best_route, moves);
   }
   double best_len = space_.route_cost(best_route);
   sol.trace.push_back({0, clock.seconds(), best_len});
@@ -610,10 +633,10 @@ Solution Colony::run() {
       // to the first ants, measured worse (d1291 at 5 s: 0.74 % against 0.30 %).
       const int scale = static_cast<int>(rng.below(4));  // as order_ants drew it
       construct_focused(w, rng, std::max(1, (p_.focus_edges << scale) / 2));
-      if (use_ls) searchers[static_cast<std::size_t>(worker)].improve_from(w.route, or_opt, w.seeds);
+      if (use_ls) searchers[static_cast<std::size_t>(worker)].improve_from(w.route, moves, w.seeds);
     } else {
       construct(w, rng, acs);
-      if (use_ls) searchers[static_cast<std::size_t>(worker)].improve(w.route, or_opt);
+      if (use_ls) searchers[static_cast<std::size_t>(worker)].improve(w.route, moves);
     }
     AntRoute& out = work[static_cast<std::size_t>(k)];
     out.length = space_.route_cost(w.route);
@@ -691,13 +714,13 @@ Solution Colony::run() {
         for (int q = 0; q < kicks; ++q) double_bridge(r, krng, seeds);
         if (!seeds.empty()) {
           if (restart) {
-            kick_searcher_->improve(r, or_opt);
+            kick_searcher_->improve(r, moves);
             set_all_tau(tau0_);
             reinforced_for = -1.0;
             restart_best_len = std::numeric_limits<double>::infinity();
             since_restart = 0;
           } else {
-            kick_searcher_->improve_from(r, or_opt, seeds);
+            kick_searcher_->improve_from(r, moves, seeds);
           }
           ref_len_ = space_.route_cost(r);
           set_reference(r);
@@ -831,7 +854,7 @@ Params resolve(const Params& in, std::size_t n) {
       break;
   }
   if (p.focus_edges <= 0) p.focus_edges = 16;
-  if (p.candidates <= 0) p.candidates = ls ? 12 : 20;
+  if (p.candidates <= 0) p.candidates = ls ? 5 : 20;
   // Without a budget, the work grows with n: 300 iterations up to a few
   // thousand holes, fewer beyond (2e6 / n: 20 at 100 000, 3 at a million). A
   // focused iteration costs a small part of a whole-route one, so it gets ten

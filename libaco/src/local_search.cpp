@@ -1,6 +1,7 @@
 #include "local_search.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace aco::detail {
 
@@ -168,28 +169,185 @@ bool LocalSearcher::try_or_opt(HoleIndex a) {
   return false;
 }
 
+bool LocalSearcher::between(HoleIndex a, HoleIndex b, HoleIndex c, int dir) const {
+  if (dir == 1) std::swap(a, c);
+  const std::size_t pa = pos_[a], pb = pos_[b], pc = pos_[c];
+  return pa <= pc ? (pa <= pb && pb <= pc) : (pb >= pa || pb <= pc);
+}
+
+void LocalSearcher::flip(HoleIndex a, HoleIndex b, HoleIndex c, HoleIndex d) {
+  // Read both edges forward: if b precedes a, the same flip is (b, a, d, c).
+  if (route_[succ(pos_[a])] != b) {
+    std::swap(a, b);
+    std::swap(c, d);
+  }
+  const std::size_t p = pos_[a], q = pos_[c];
+  // Edge p is (route[p], route[p+1]); reversing the positions after the
+  // lower edge up to the higher one joins a to c and b to d either way.
+  reverse(std::min(p, q), std::max(p, q));
+}
+
+bool LocalSearcher::try_three_opt(HoleIndex t1) {
+  // Names follow Lin & Kernighan: x1 = (t1,t2) out, y1 = (t2,t3) in,
+  // x2 = (t3,t4) out, y2 = (t4,t5) in, x3 = (t5,t6) out, y3 = (t6,t1) in.
+  // Gains are partial sums that must stay positive (the gain criterion).
+  // V, an open path's start and end, is never t1..t6: its edges cost
+  // differently each way and are left to 2-opt and Or-opt, which read them in
+  // array order.
+  const HoleIndex v = space_.open() ? space_.virtual_node() : static_cast<HoleIndex>(-1);
+  // The most promising 3-opt step that did not close with a gain: where the
+  // search goes deeper when nothing closes.
+  struct Step {
+    double gain = 0.0;
+    HoleIndex t[5] = {};
+  } best;
+  for (int dir = 0; dir < 2; ++dir) {
+    const HoleIndex t2 = next(t1, dir);
+    if (t2 == v) continue;
+    const double d12 = space_.d(t1, t2);
+    const HoleIndex* n2 = cand_.of(t2);
+    for (int r3 = 0; r3 < cand_.k; ++r3) {
+      const HoleIndex t3 = n2[r3];
+      const double g1 = d12 - space_.d(t2, t3);
+      if (g1 <= kEps) break;
+      if (t3 == t1 || t3 == next(t2, dir)) continue;
+      for (int stretch = 0; stretch < 2; ++stretch) {
+        // stretch 0: t4 before t3, so closing up would be a 2-opt move, and a
+        //   second flip follows; stretch 1: t4 after t3, so t2..t3 is cut out
+        //   whole and must be put back between t5 and t6 inside it.
+        const HoleIndex t4 = next(t3, stretch == 0 ? 1 - dir : dir);
+        if (t4 == v || t4 == t1 || t4 == t2) continue;
+        const double g1x = g1 + space_.d(t3, t4);
+        const HoleIndex* n4 = cand_.of(t4);
+        for (int r5 = 0; r5 < cand_.k; ++r5) {
+          const HoleIndex t5 = n4[r5];
+          const double g2 = g1x - space_.d(t4, t5);
+          if (g2 <= kEps) break;
+          if (t5 == t3 || t5 == t1) continue;
+          if (stretch == 0) {
+            // After the first flip the route reads t1 t4 ... t2 t3 ...; t6
+            // must precede t5 in that reading: t5's old successor inside the
+            // turned stretch t2..t4, its old predecessor outside it.
+            const bool inside = between(t2, t5, t4, dir);
+            if (t5 == next(t4, 1 - dir) && inside) continue;  // t5 is t4's new neighbour
+            const HoleIndex t6 = next(t5, inside ? dir : 1 - dir);
+            if (t6 == v) continue;
+            const double g3 = g2 + space_.d(t5, t6);
+            if (g3 - space_.d(t6, t1) > kEps) {
+              flip(t1, t2, t4, t3);
+              flip(t1, t4, t6, t5);
+              for (HoleIndex t : {t1, t2, t3, t4, t5, t6}) push(t);
+              return true;
+            }
+            if (g3 > best.gain) best = {g3, {t2, t3, t4, t5, t6}};
+          } else {
+            if (!between(t2, t5, t3, dir)) continue;
+            for (int side = 0; side < 2; ++side) {
+              // side 0: t6 after t5, the stretch goes back as it was (in two
+              // pieces swapped); side 1: t6 before t5, both pieces turned.
+              if (side == 0 && t5 == t3) continue;
+              if (side == 1 && t5 == t2) continue;
+              const HoleIndex t6 = next(t5, side == 0 ? dir : 1 - dir);
+              if (t6 == v) continue;
+              if (g2 + space_.d(t5, t6) - space_.d(t6, t1) <= kEps) continue;
+              if (side == 0) {
+                flip(t1, t2, t5, t6);
+                flip(t1, t5, t3, t4);
+                flip(t1, t3, t6, t2);
+              } else {
+                flip(t1, t2, t6, t5);
+                flip(t2, t5, t3, t4);
+              }
+              for (HoleIndex t : {t1, t2, t3, t4, t5, t6}) push(t);
+              return true;
+            }
+          }
+        }
+      }
+    }
+  }
+  if (best.gain <= kEps) return false;
+  return deepen(t1, best.t, best.gain);
+}
+
+bool LocalSearcher::deepen(HoleIndex t1, const HoleIndex (&t)[5], double gain) {
+  // Lin-Kernighan's deeper steps (Lin & Kernighan 1973), one way at each
+  // level: the 3-opt step is made, then edge (t1, last) is taken out again
+  // and the route closed by one more flip, choosing at each level the
+  // neighbour that leaves the largest partial gain, until a closing gains or
+  // kDepth flips were made in vain; then every flip is undone. Flips of an
+  // array route cost up to half its length, so a failed search costs
+  // O(kDepth n) at worst; on a good route neighbours are near in it too.
+  constexpr int kDepth = 8;
+  constexpr int kBreadth = 5;
+  const HoleIndex v = space_.open() ? space_.virtual_node() : static_cast<HoleIndex>(-1);
+  flips_.clear();
+  auto make = [&](HoleIndex a, HoleIndex b, HoleIndex c, HoleIndex d) {
+    flip(a, b, c, d);
+    flips_.push_back({a, b, c, d});
+  };
+  make(t1, t[0], t[2], t[1]);
+  make(t1, t[2], t[4], t[3]);
+  HoleIndex last = t[4];
+  for (int depth = 2; depth < kDepth; ++depth) {
+    const int dir = route_[succ(pos_[t1])] == last ? 0 : 1;
+    const HoleIndex after_last = next(last, dir);
+    const HoleIndex* nl = cand_.of(last);
+    double best_g = kEps;
+    HoleIndex b7 = v, b8 = v;
+    for (int r = 0; r < std::min(kBreadth, cand_.k); ++r) {
+      const HoleIndex t7 = nl[r];
+      const double g = gain - space_.d(last, t7);
+      if (g <= kEps) break;
+      if (t7 == t1 || t7 == after_last) continue;
+      const HoleIndex t8 = next(t7, 1 - dir);
+      if (t8 == v) continue;
+      const double g8 = g + space_.d(t7, t8);
+      if (g8 - space_.d(t8, t1) > kEps) {
+        make(t1, last, t8, t7);
+        for (const auto& f : flips_) {
+          for (HoleIndex x : f) push(x);
+        }
+        return true;
+      }
+      if (g8 > best_g) {
+        best_g = g8;
+        b7 = t7;
+        b8 = t8;
+      }
+    }
+    if (b7 == v) break;
+    make(t1, last, b8, b7);
+    gain = best_g;
+    last = b8;
+  }
+  // Nothing closed with a gain: undo. flip(a, c, b, d) undoes flip(a, b, c, d).
+  for (auto f = flips_.rbegin(); f != flips_.rend(); ++f) flip((*f)[0], (*f)[2], (*f)[1], (*f)[3]);
+  return false;
+}
+
 void LocalSearcher::load(const std::vector<HoleIndex>& route) {
   route_.assign(route.begin(), route.end());
   for (std::size_t i = 0; i < m_; ++i) pos_[route_[i]] = i;
 }
 
-void LocalSearcher::search_whole_route_from(const HoleIndex* first, const HoleIndex* last, bool or_opt) {
+void LocalSearcher::search_whole_route_from(const HoleIndex* first, const HoleIndex* last, Moves moves) {
   windowed_ = false;
   lo_ = 0;
   hi_ = m_;
   queue_.clear();
   head_ = 0;
   for (const HoleIndex* node = first; node != last; ++node) push(*node);
-  run_queue(or_opt);
+  run_queue(moves);
 }
 
-void LocalSearcher::improve(std::vector<HoleIndex>& route, bool or_opt) {
+void LocalSearcher::improve(std::vector<HoleIndex>& route, Moves moves) {
   m_ = route.size();
   if (m_ < 4 || cand_.k == 0) return;
   load(route);
   std::fill(queued_.begin(), queued_.end(), 0);
   if (m_ <= kWindow) {
-    search_whole_route_from(route_.data(), route_.data() + m_, or_opt);
+    search_whole_route_from(route_.data(), route_.data() + m_, moves);
   } else {
     // Windows overlap by half, so a move across one window's border lies
     // inside the next; each is searched until no move in it gains.
@@ -200,30 +358,43 @@ void LocalSearcher::improve(std::vector<HoleIndex>& route, bool or_opt) {
       queue_.clear();
       head_ = 0;
       for (std::size_t p = lo_; p <= hi_; ++p) push(route_[p]);
-      run_queue(or_opt);
+      run_queue(moves);
       if (hi_ == m_ - 1) break;
     }
   }
   route.assign(route_.begin(), route_.end());
 }
 
-void LocalSearcher::improve_from(std::vector<HoleIndex>& route, bool or_opt, const std::vector<HoleIndex>& seeds) {
+void LocalSearcher::improve_from(std::vector<HoleIndex>& route, Moves moves, const std::vector<HoleIndex>& seeds) {
   m_ = route.size();
   if (m_ < 4 || cand_.k == 0 || seeds.empty()) return;
   load(route);
   // Whole-route search: a focused ant makes few moves, so even at a million
   // holes the O(n) reversal of a few of them costs less than windows would.
-  search_whole_route_from(seeds.data(), seeds.data() + seeds.size(), or_opt);
+  search_whole_route_from(seeds.data(), seeds.data() + seeds.size(), moves);
   route.assign(route_.begin(), route_.end());
 }
 
-void LocalSearcher::run_queue(bool or_opt) {
+void LocalSearcher::run_queue(Moves moves) {
   while (head_ < queue_.size()) {
     const HoleIndex a = queue_[head_++];
     queued_[a] = 0;
     if (windowed_ && !in_window(pos_[a])) continue;
+    const double before = audit_ ? space_.route_cost(route_) : 0.0;
     bool moved = try_two_opt(a);
-    if (!moved && or_opt) moved = try_or_opt(a);
+    if (!moved && moves != Moves::TwoOpt) moved = try_or_opt(a);
+    if (!moved && moves == Moves::ThreeOpt && !windowed_) moved = try_three_opt(a);
+    if (audit_) {
+      ++audited_moves_;
+      const double after = space_.route_cost(route_);
+      // A move must shorten the route; a search that found none must leave it as it was.
+      if (moved ? !(after < before - kEps) : std::abs(after - before) > kEps) {
+        ++failed_audits_;
+        queue_.clear();  // a search whose moves lengthen the route may never end
+        head_ = 0;
+        return;
+      }
+    }
     if (moved) push(a);
     // Keep the queue from growing without bound: compact once its dead head is large.
     if (head_ > 4096 && head_ * 2 > queue_.size()) {

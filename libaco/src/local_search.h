@@ -4,6 +4,7 @@
 // optimization"). The route is a cycle over Space::route_size() nodes whose
 // position 0 never moves, so an open path's virtual node V keeps its place and
 // its direction-dependent edges stay right.
+#include <array>
 #include <vector>
 
 #include "candidates.h"
@@ -11,31 +12,58 @@
 
 namespace aco::detail {
 
+// Which moves a search tries at each hole, each set adding to the one before.
+enum class Moves {
+  TwoOpt,
+  // + moving a segment of 1 to 3 holes elsewhere, either way round (Or 1976).
+  OrOpt,
+  // + every sequential 3-opt move found from neighbour lists (Johnson &
+  // McGeoch 1997; LK's depth-3 step): the two that are two 2-opt flips in a
+  // row, and the two that move a whole stretch of the route elsewhere, turned
+  // or not, which Or-opt does only for stretches of up to 3 holes.
+  ThreeOpt
+};
+
 // Aligned to a cache line: one searcher per ant, and ants run on different threads.
 class alignas(64) LocalSearcher {
  public:
   LocalSearcher(const Space& space, const Candidates& candidates);
 
   // Improves `route` in place until no move gains.
-  // `or_opt` adds segment moves of 1 to 3 holes to the 2-opt moves.
+  // `moves` says which moves are tried (see Moves).
   // Routes longer than kWindow are improved in overlapping windows of
   // kWindow positions: an array 2-opt move reverses up to half the route, so
   // on a million holes whole-route search is quadratic; windows keep every
   // move's cost bounded and the pass linear.
-  void improve(std::vector<HoleIndex>& route, bool or_opt);
+  void improve(std::vector<HoleIndex>& route, Moves moves);
   // The same, looking only where something changed: the queue starts with
   // `seeds` (the ends of an ant's new edges) and grows only where moves are
   // made, so the search costs what the ant changed, plus O(n) to load the route.
-  void improve_from(std::vector<HoleIndex>& route, bool or_opt, const std::vector<HoleIndex>& seeds);
+  void improve_from(std::vector<HoleIndex>& route, Moves moves, const std::vector<HoleIndex>& seeds);
   static constexpr std::size_t kWindow = 100000;
+
+  // For tests: measure the whole route before and after every search at a
+  // hole and count those where a move did not shorten it or no move changed
+  // its length (O(n) each, so never in a run). The first failure ends the search.
+  void audit(bool on) { audit_ = on; }
+  std::size_t failed_audits() const { return failed_audits_; }
+  std::size_t audited_moves() const { return audited_moves_; }
 
  private:
   void load(const std::vector<HoleIndex>& route);  // route_ and pos_ from `route` (m_ set)
-  void search_whole_route_from(const HoleIndex* first, const HoleIndex* last, bool or_opt);
-  void run_queue(bool or_opt);
+  void search_whole_route_from(const HoleIndex* first, const HoleIndex* last, Moves moves);
+  void run_queue(Moves moves);
   bool in_window(std::size_t position) const { return position >= lo_ && position <= hi_; }
   bool try_two_opt(HoleIndex a);
   bool try_or_opt(HoleIndex a);
+  bool try_three_opt(HoleIndex a);
+  bool deepen(HoleIndex t1, const HoleIndex (&t)[5], double gain);
+  // Removes edges {a, b} and {c, d}, where b follows a and d follows c in the
+  // same direction, and adds {a, c} and {b, d}: one array reversal.
+  void flip(HoleIndex a, HoleIndex b, HoleIndex c, HoleIndex d);
+  // Whether b lies on the way from a to c, going forward (dir 0) or backward.
+  bool between(HoleIndex a, HoleIndex b, HoleIndex c, int dir) const;
+  HoleIndex next(HoleIndex x, int dir) const { return route_[dir == 0 ? succ(pos_[x]) : pred(pos_[x])]; }
   void reverse(std::size_t i, std::size_t j);  // reverse positions i+1..j
   void move_segment(std::size_t s, std::size_t len, std::size_t q, bool reversed);
   void push(HoleIndex node);
@@ -49,12 +77,15 @@ class alignas(64) LocalSearcher {
   const Candidates& cand_;
   std::vector<HoleIndex> route_;
   std::vector<std::size_t> pos_;
+  std::vector<std::array<HoleIndex, 4>> flips_;  // deepen's flips, to undo
   std::vector<HoleIndex> queue_;
   std::vector<char> queued_;
   std::size_t head_ = 0;
   std::size_t m_ = 0;
   std::size_t lo_ = 0, hi_ = 0;  // positions a move may touch
   bool windowed_ = false;
+  bool audit_ = false;
+  std::size_t failed_audits_ = 0, audited_moves_ = 0;
 };
 
 }  // namespace aco::detail

@@ -70,6 +70,7 @@ const char* to_string(LocalSearch local_search) {
     case LocalSearch::None: return "none";
     case LocalSearch::TwoOpt: return "2opt";
     case LocalSearch::TwoOptOrOpt: return "2opt+oropt";
+    case LocalSearch::ThreeOpt: return "3opt";
   }
   return "?";
 }
@@ -82,7 +83,7 @@ std::optional<Algorithm> algorithm_from_string(const std::string& name) {
 }
 
 std::optional<LocalSearch> local_search_from_string(const std::string& name) {
-  for (LocalSearch l : {LocalSearch::None, LocalSearch::TwoOpt, LocalSearch::TwoOptOrOpt}) {
+  for (LocalSearch l : {LocalSearch::None, LocalSearch::TwoOpt, LocalSearch::TwoOptOrOpt, LocalSearch::ThreeOpt}) {
     if (name == to_string(l)) return l;
   }
   if (name == "oropt" || name == "or-opt" || name == "2opt+or-opt") return LocalSearch::TwoOptOrOpt;

@@ -1,0 +1,224 @@
+// White-box tests of the local search's moves and of the alpha-nearness
+// candidates (they reach into libaco/src): routes stay routes, no move
+// lengthens one, the result is checked for local optimality by a search of
+// our own, and alpha-nearness against a minimum spanning tree built here by
+// Prim's O(n²) algorithm.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <limits>
+#include <numeric>
+#include <random>
+#include <set>
+
+#include "aco/baselines.h"
+#include "candidates.h"
+#include "local_search.h"
+#include "space.h"
+
+namespace {
+
+using aco::HoleIndex;
+using aco::detail::Moves;
+
+aco::Problem random_problem(std::size_t n, unsigned seed, aco::Shape shape, bool clustered) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 1000.0);
+  std::normal_distribution<double> spread(0.0, 15.0);
+  std::vector<aco::Point2> centres;
+  for (int c = 0; c < 12; ++c) centres.push_back({u(rng), u(rng)});
+  aco::Problem p;
+  p.shape = shape;
+  p.start = {-50.0, -50.0};
+  for (std::size_t i = 0; i < n; ++i) {
+    if (clustered) {
+      const aco::Point2 c = centres[i % centres.size()];
+      p.points.push_back({c.x + spread(rng), c.y + spread(rng)});
+    } else {
+      p.points.push_back({u(rng), u(rng)});
+    }
+  }
+  return p;
+}
+
+std::vector<HoleIndex> start_route(const aco::detail::Space& space, const aco::Problem& p, unsigned seed) {
+  aco::Order order = aco::nearest_neighbor(p);
+  if (seed % 2 == 1) {
+    std::mt19937 rng(seed);
+    std::shuffle(order.begin(), order.end(), rng);
+  }
+  std::vector<HoleIndex> route;
+  if (space.open()) route.push_back(space.virtual_node());
+  route.insert(route.end(), order.begin(), order.end());
+  return route;
+}
+
+void expect_route(const aco::detail::Space& space, const std::vector<HoleIndex>& route) {
+  ASSERT_EQ(route.size(), space.route_size());
+  std::set<HoleIndex> seen(route.begin(), route.end());
+  EXPECT_EQ(seen.size(), route.size());
+  EXPECT_EQ(*seen.rbegin(), space.route_size() - 1);
+  if (space.open()) {
+    EXPECT_EQ(route[0], space.virtual_node());
+  }
+}
+
+// The best 2-opt move of the neighbour-list neighbourhood (Bentley 1992): it
+// adds edge (a, c) for c in a's list and removes an edge at a longer than
+// (a, c). Found here by trying every such pair, independent of the searcher's
+// queue, don't-look bits and positions.
+double best_two_opt_gain(const aco::detail::Space& space, const aco::detail::Candidates& cand,
+                         const std::vector<HoleIndex>& route) {
+  const std::size_t m = route.size();
+  std::vector<std::size_t> pos(m);
+  for (std::size_t i = 0; i < m; ++i) pos[route[i]] = i;
+  auto e = [&](std::size_t i) { return space.e(route[i], route[(i + 1) % m]); };
+  auto before = [&](std::size_t i) { return i == 0 ? m - 1 : i - 1; };
+  double best = 0.0;
+  for (HoleIndex a = 0; a < space.holes(); ++a) {
+    for (int r = 0; r < cand.k; ++r) {
+      const HoleIndex c = cand.of(a)[r];
+      // Edges (a, after a) and (c, after c), or (before a, a) and (before c, c).
+      for (bool forward : {true, false}) {
+        const std::size_t x = forward ? pos[a] : before(pos[a]), y = forward ? pos[c] : before(pos[c]);
+        if (e(x) - space.d(a, c) <= 0.0) continue;
+        const std::size_t lo = std::min(x, y), hi = std::max(x, y);
+        if (hi <= lo + 1) continue;
+        const double gain = e(lo) + e(hi) - space.e(route[lo], route[hi]) - space.e(route[lo + 1], route[(hi + 1) % m]);
+        best = std::max(best, gain);
+      }
+    }
+  }
+  return best;
+}
+
+TEST(local_search_test, every_move_set_keeps_a_route_never_lengthens_it_and_ends_with_no_two_opt_move) {
+  for (aco::Shape shape : {aco::Shape::ClosedTour, aco::Shape::OpenPath}) {
+    for (bool clustered : {false, true}) {
+      for (unsigned seed = 1; seed <= 4; ++seed) {
+        const aco::Problem p = random_problem(300 + 250 * seed, seed, shape, clustered);
+        const aco::detail::Space space(p);
+        const aco::detail::Candidates cand = aco::detail::build_candidates(space, 8);
+        const std::vector<HoleIndex> start = start_route(space, p, seed);
+        for (Moves moves : {Moves::TwoOpt, Moves::OrOpt, Moves::ThreeOpt}) {
+          SCOPED_TRACE(::testing::Message() << "shape " << int(shape) << " clustered " << clustered << " seed " << seed
+                                            << " moves " << int(moves));
+          std::vector<HoleIndex> route = start;
+          aco::detail::LocalSearcher ls(space, cand);
+          ls.audit(true);
+          // Don't-look bits are a heuristic: a hole is looked at again only
+          // when its own edges change, so a pass can leave a move a later
+          // pass finds. Passes are repeated until one changes nothing.
+          double length = std::numeric_limits<double>::infinity();
+          for (int pass = 0; pass < 50 && space.route_cost(route) < length - 1e-9; ++pass) {
+            length = space.route_cost(route);
+            ls.improve(route, moves);
+            expect_route(space, route);
+          }
+          EXPECT_EQ(ls.failed_audits(), 0u) << "moves that did not shorten the route";
+          EXPECT_GT(ls.audited_moves(), 0u);
+          EXPECT_LE(best_two_opt_gain(space, cand, route), 1e-6);
+        }
+      }
+    }
+  }
+}
+
+TEST(local_search_test, three_opt_improves_routes_that_two_opt_and_or_opt_left_alone) {
+  // Fails if 3-opt finds nothing (or only what Or-opt finds): from an
+  // Or-opt local optimum, the 3-opt moves shorten every one of these routes.
+  for (aco::Shape shape : {aco::Shape::ClosedTour, aco::Shape::OpenPath}) {
+    for (unsigned seed = 1; seed <= 5; ++seed) {
+      const aco::Problem p = random_problem(2000, seed, shape, seed % 2 == 0);
+      const aco::detail::Space space(p);
+      const aco::detail::Candidates cand = aco::detail::build_candidates(space, 10);
+      std::vector<HoleIndex> route = start_route(space, p, 2);
+      aco::detail::LocalSearcher ls(space, cand);
+      ls.audit(true);
+      ls.improve(route, Moves::OrOpt);
+      const double or_opt = space.route_cost(route);
+      ls.improve(route, Moves::ThreeOpt);
+      expect_route(space, route);
+      EXPECT_LT(space.route_cost(route), or_opt * 0.995) << "seed " << seed;
+      EXPECT_EQ(ls.failed_audits(), 0u) << "moves that did not shorten the route";
+    }
+  }
+}
+
+TEST(local_search_test, alpha_candidates_are_nearest_holes_and_hold_the_spanning_tree_edges) {
+  for (unsigned seed = 1; seed <= 3; ++seed) {
+    const aco::Problem p = random_problem(400, seed, aco::Shape::ClosedTour, seed == 2);
+    const aco::detail::Space space(p);
+    const HoleIndex n = space.holes();
+    const aco::detail::Candidates nearest = aco::detail::build_candidates(space, 16);
+    // Without the ascent alpha is measured on the plain minimum spanning
+    // tree, whose own edges have alpha 0: Prim's tree, built here over all
+    // pairs, must then be in the lists of holes with at most k tree edges.
+    const int k = 5;
+    const aco::detail::Candidates alpha = aco::detail::alpha_candidates(space, nearest, k, 0);
+    ASSERT_EQ(alpha.k, k);
+    std::vector<double> best(n, std::numeric_limits<double>::infinity());
+    std::vector<HoleIndex> parent(n, 0);
+    std::vector<char> done(n, 0);
+    std::vector<std::vector<HoleIndex>> tree(n);
+    best[0] = 0.0;
+    for (HoleIndex step = 0; step < n; ++step) {
+      HoleIndex u = n;
+      for (HoleIndex v = 0; v < n; ++v) {
+        if (!done[v] && (u == n || best[v] < best[u])) u = v;
+      }
+      done[u] = 1;
+      if (step > 0) {
+        tree[u].push_back(parent[u]);
+        tree[parent[u]].push_back(u);
+      }
+      for (HoleIndex v = 0; v < n; ++v) {
+        if (!done[v] && space.d(u, v) < best[v]) {
+          best[v] = space.d(u, v);
+          parent[v] = u;
+        }
+      }
+    }
+    int checked = 0;
+    for (HoleIndex i = 0; i < n; ++i) {
+      const HoleIndex* row = alpha.of(i);
+      const HoleIndex* near = nearest.of(i);
+      std::set<HoleIndex> in_row(row, row + k);
+      EXPECT_EQ(in_row.size(), static_cast<std::size_t>(k));
+      EXPECT_EQ(in_row.count(i), 0u);
+      for (int r = 0; r < k; ++r) {
+        EXPECT_NE(std::find(near, near + nearest.k, row[r]), near + nearest.k) << "not one of the 16 nearest";
+        if (r > 0) {
+          EXPECT_LE(space.d(i, row[r - 1]), space.d(i, row[r])) << "rows are sorted by distance";
+        }
+      }
+      if (tree[i].size() > static_cast<std::size_t>(k)) continue;
+      for (HoleIndex j : tree[i]) {
+        if (std::find(near, near + nearest.k, j) == near + nearest.k) continue;
+        EXPECT_EQ(in_row.count(j), 1u) << "tree edge " << i << "-" << j << " missing from " << i << "'s row";
+        ++checked;
+      }
+    }
+    EXPECT_GT(checked, static_cast<int>(n));  // most tree edges were checked
+  }
+}
+
+TEST(local_search_test, the_ascent_keeps_rows_valid_and_changes_them) {
+  const aco::Problem p = random_problem(1500, 7, aco::Shape::ClosedTour, false);
+  const aco::detail::Space space(p);
+  const aco::detail::Candidates nearest = aco::detail::build_candidates(space, 16);
+  const aco::detail::Candidates plain = aco::detail::alpha_candidates(space, nearest, 5, 0);
+  const aco::detail::Candidates raised = aco::detail::alpha_candidates(space, nearest, 5, 60);
+  ASSERT_EQ(raised.list.size(), plain.list.size());
+  std::size_t differ = 0;
+  for (HoleIndex i = 0; i < space.holes(); ++i) {
+    std::set<HoleIndex> row(raised.of(i), raised.of(i) + 5);
+    EXPECT_EQ(row.size(), 5u);
+    EXPECT_EQ(row.count(i), 0u);
+    if (!std::equal(plain.of(i), plain.of(i) + 5, raised.of(i))) ++differ;
+  }
+  // pi moves the trees, so some rows must change (else the ascent did nothing).
+  EXPECT_GT(differ, space.holes() / 50);
+}
+
+}  // namespace
