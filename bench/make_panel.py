@@ -11,6 +11,9 @@ import sys
 
 
 def main():
+    if any(a in ("-h", "--help") for a in sys.argv[1:]):
+        print(__doc__)
+        return
     path = sys.argv[1] if len(sys.argv) > 1 else "panel1m.dxf"
     cols = int(sys.argv[2]) if len(sys.argv) > 2 else 100
     rows = int(sys.argv[3]) if len(sys.argv) > 3 else 100

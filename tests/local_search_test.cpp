@@ -114,6 +114,8 @@ TEST(local_search_test, every_move_set_keeps_a_route_never_lengthens_it_and_ends
             length = space.route_cost(route);
             ls.improve(route, moves);
             expect_route(space, route);
+            // The colony takes an ant's length from its walk minus these gains.
+            EXPECT_NEAR(ls.gain(), length - space.route_cost(route), 1e-9 * length);
           }
           EXPECT_EQ(ls.failed_audits(), 0u) << "moves that did not shorten the route";
           EXPECT_GT(ls.audited_moves(), 0u);

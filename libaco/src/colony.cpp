@@ -58,9 +58,18 @@ constexpr int kAlphaFrom = 16;
 // sorts and the tree's O(n log n) ancestor table stop paying for themselves.
 constexpr std::size_t kAlphaLimit = 200000;
 // Subgradient steps before alpha is measured: 100 took 0.1 s on pcb3038 and
-// 1.5 s on d15112, so fewer on larger inputs (66 on d15112, 20 from 50 000).
-int ascent_iterations(std::size_t holes) {
-  return static_cast<int>(std::clamp<std::size_t>(1000000 / std::max<std::size_t>(holes, 1), 20, 100));
+// 1.5 s on d15112, so fewer on larger inputs (66 on d15112, 20 from 50 000),
+// and under a time limit no more than about 5 % of it at the 1.5 us per hole
+// and step measured on 100 000 holes (2 steps for d15112 in 1 s). Counted, not
+// timed, so the same options give the same candidates on any machine.
+int ascent_iterations(std::size_t holes, double time_limit_s) {
+  const std::size_t n = std::max<std::size_t>(holes, 1);
+  std::size_t steps = std::clamp<std::size_t>(1000000 / n, 20, 100);
+  if (time_limit_s > 0) {
+    const double affordable = 0.05 * time_limit_s / (1.5e-6 * static_cast<double>(n));
+    steps = std::min(steps, static_cast<std::size_t>(affordable));
+  }
+  return static_cast<int>(steps);
 }
 
 // FocusedAcs, chosen by measurement on pcb442, pcb1173 and pcb3038 (median gap
@@ -112,7 +121,8 @@ struct alignas(64) AntWork {
   // halving), and the ends of the edges the ant made new.
   std::vector<std::uint32_t> mark;
   std::uint32_t stamp = 0;
-  std::vector<std::uint32_t> skip;
+  std::vector<std::uint32_t> visited_pos;  // positions in R of the holes walked before the copy
+  double length = 0.0;                     // of `route` as built
   std::vector<HoleIndex> seeds;
   // Focused colony: the shortest route this worker built this round, so only
   // it, not every ant's, goes to the thread that updates the pheromone.
@@ -143,7 +153,7 @@ class Colony {
       cand_ = detail::build_candidates(space_, static_cast<int>(n_) - 1);
     } else if (p_.local_search != LocalSearch::None && n_ <= kAlphaLimit) {
       cand_ = detail::alpha_candidates(space_, detail::build_candidates(space_, kAlphaFrom), p_.candidates,
-                                       ascent_iterations(n_));
+                                       ascent_iterations(n_, p_.time_limit_s));
     } else {
       cand_ = detail::build_candidates(space_, p_.candidates);
     }
@@ -208,6 +218,7 @@ class Colony {
   void construct_focused(AntWork& w, Rng& rng, int bound) const;
   HoleIndex choose_focused(HoleIndex cur, const AntWork& w, Rng& rng, HoleIndex exclude) const;
   void set_reference(const std::vector<HoleIndex>& route);
+  void rewrite_reference(const std::vector<HoleIndex>& route);
   HoleIndex choose_next(HoleIndex cur, AntWork& w, Rng& rng, bool acs);
   HoleIndex nearest_unvisited(HoleIndex cur, const AntWork& w) const;
   void deposit(const std::vector<HoleIndex>& route, double amount);
@@ -237,6 +248,8 @@ class Colony {
   }
   Order to_order(const std::vector<HoleIndex>& route) const;
 
+  // Started first: the candidate lists' ascent counts against --time-limit.
+  Clock clock_;
   const Problem& problem_;
   Params p_;
   Space space_;
@@ -255,6 +268,8 @@ class Colony {
   // and each node's position in it.
   std::vector<HoleIndex> ref_route_;
   std::vector<std::uint32_t> ref_pos_;
+  // ref_prefix_[i]: length of R from position 0 to position i, read in array order.
+  std::vector<double> ref_prefix_;
   double ref_len_ = 0.0;
   int ref_stall_ = 0;  // iterations since the reference last improved
   std::unique_ptr<LocalSearcher> kick_searcher_;
@@ -266,8 +281,19 @@ void Colony::set_reference(const std::vector<HoleIndex>& route) {
     ref_route_ = route;
     ref_pos_.resize(m);
     for (std::size_t i = 0; i < m; ++i) ref_pos_[route[i]] = static_cast<std::uint32_t>(i);
-    return;
+  } else {
+    rewrite_reference(route);
   }
+  ref_prefix_.resize(m);
+  double sum = 0.0;
+  for (std::size_t i = 0; i < m; ++i) {
+    ref_prefix_[i] = sum;
+    if (i + 1 < m) sum += space_.e(ref_route_[i], ref_route_[i + 1]);
+  }
+}
+
+void Colony::rewrite_reference(const std::vector<HoleIndex>& route) {
+  const std::size_t m = route.size();
   // The new reference is mostly the old one: read it from the old one's first
   // node, in the old one's direction, and write only the positions that
   // changed. The lines left alone stay in the cache of the core whose ants
@@ -329,9 +355,12 @@ HoleIndex Colony::choose_focused(HoleIndex cur, const AntWork& w, Rng& rng, Hole
 
 void Colony::construct_focused(AntWork& w, Rng& rng, int bound) const {
   // Walk from a random node of the reference route R. While the ant has made
-  // fewer than focus_edges new edges it chooses by the ACS rule; after that it
+  // fewer than `bound` new edges it chooses by the ACS rule; after that it
   // copies R, skipping what it has visited. Every edge that is not R's is new,
-  // and its two ends seed the local search.
+  // and its two ends seed the local search. The copy is made run by run of R
+  // between the few visited positions, its length read from R's prefix sums,
+  // so an ant costs a memcpy of the route plus what it changes, not a step
+  // per hole (100 000 holes: 1.8 ms an ant before).
   const std::size_t m = ref_route_.size();  // nodes, V included for an open path
   if (w.mark.size() != m) {
     w.mark.assign(m, 0);
@@ -341,54 +370,80 @@ void Colony::construct_focused(AntWork& w, Rng& rng, int bound) const {
     std::fill(w.mark.begin(), w.mark.end(), 0);
     w.stamp = 1;
   }
-  w.skip.resize(m);
-  std::iota(w.skip.begin(), w.skip.end(), 0u);
-  // The first unvisited position of R at or after p (cyclically).
-  auto next_free = [&](std::uint32_t p) {
-    while (w.skip[p] != p) {
-      w.skip[p] = w.skip[w.skip[p]];
-      p = w.skip[p];
-    }
-    return p;
-  };
-  auto visit = [&](HoleIndex h) {
-    w.mark[h] = w.stamp;
-    const std::uint32_t p = ref_pos_[h];
-    w.skip[p] = static_cast<std::uint32_t>(p + 1 == m ? 0 : p + 1);
-    w.route.push_back(h);
-  };
+  const std::uint32_t last_pos = static_cast<std::uint32_t>(m - 1);
+  auto after = [&](std::uint32_t p) { return p == last_pos ? 0u : p + 1; };
   w.route.clear();
   w.seeds.clear();
+  w.visited_pos.clear();
+  w.length = 0.0;
+  auto visit = [&](HoleIndex h) {
+    w.mark[h] = w.stamp;
+    w.visited_pos.push_back(ref_pos_[h]);
+    w.route.push_back(h);
+  };
   HoleIndex cur = ref_route_[rng.below(static_cast<std::uint32_t>(m))];
   const HoleIndex first = cur;
   visit(cur);
   int changes = 0;
-  const std::uint32_t last_pos = static_cast<std::uint32_t>(m - 1);
-  for (std::size_t step = 1; step < m; ++step) {
+  while (w.route.size() < m && changes < bound) {
     const std::uint32_t pc = ref_pos_[cur];
-    const HoleIndex follow = ref_route_[pc == last_pos ? 0 : pc + 1];
+    const HoleIndex follow = ref_route_[after(pc)];
+    const bool follow_free = w.mark[follow] != w.stamp;
     HoleIndex next = n_ + 1;
-    if (changes < bound && cur < n_) {
+    if (cur < n_) {
       // Deviate from R here with probability p_dev (the choice then excludes
       // R's own edge); where R's next hole is already visited a new edge must
       // be made anyway, and the same rule picks it.
-      const bool follow_free = w.mark[follow] != w.stamp;
       if (!follow_free || rng.uniform() < kDeviate) next = choose_focused(cur, w, rng, follow);
       else next = follow;
     }
-    if (next > n_) next = ref_route_[next_free(pc == last_pos ? 0 : pc + 1)];
+    if (next > n_) {
+      // The next unvisited position of R: few are visited, so a scan is short.
+      std::uint32_t p = after(pc);
+      while (w.mark[ref_route_[p]] == w.stamp) p = after(p);
+      next = ref_route_[p];
+    }
     if (next != follow) {  // a new edge: its ends, in pairs (V among them is skipped later)
       ++changes;
       w.seeds.push_back(cur);
       w.seeds.push_back(next);
     }
+    w.length += space_.e(cur, next);
     visit(next);
     cur = next;
   }
-  if (ref_route_[ref_pos_[cur] == last_pos ? 0 : ref_pos_[cur] + 1] != first) {
+  if (w.route.size() < m) {
+    // The rest is R from after cur, cyclically, without the visited positions.
+    std::vector<std::uint32_t>& gaps = w.visited_pos;
+    std::sort(gaps.begin(), gaps.end());
+    auto copy_run = [&](std::uint32_t a, std::uint32_t b) {  // positions a..b-1 of R, a < b
+      const HoleIndex head = ref_route_[a];
+      if (ref_route_[after(ref_pos_[cur])] != head) {
+        w.seeds.push_back(cur);
+        w.seeds.push_back(head);
+      }
+      w.length += space_.e(cur, head) + (ref_prefix_[b - 1] - ref_prefix_[a]);
+      w.route.insert(w.route.end(), ref_route_.begin() + a, ref_route_.begin() + b);
+      cur = ref_route_[b - 1];
+    };
+    auto copy_range = [&](std::uint32_t lo, std::uint32_t hi) {  // unvisited positions in [lo, hi)
+      auto g = std::lower_bound(gaps.begin(), gaps.end(), lo);
+      std::uint32_t p = lo;
+      for (; g != gaps.end() && *g < hi; ++g) {
+        if (*g > p) copy_run(p, *g);
+        p = *g + 1;
+      }
+      if (p < hi) copy_run(p, hi);
+    };
+    const std::uint32_t start = after(ref_pos_[cur]);
+    copy_range(start, static_cast<std::uint32_t>(m));
+    if (start > 0) copy_range(0, start);
+  }
+  if (ref_route_[after(ref_pos_[cur])] != first) {
     w.seeds.push_back(cur);
     w.seeds.push_back(first);
   }
+  w.length += space_.e(cur, first);
   // An open path keeps V at position 0.
   if (space_.open()) {
     const auto v = std::find(w.route.begin(), w.route.end(), n_);
@@ -532,7 +587,7 @@ Order Colony::to_order(const std::vector<HoleIndex>& route) const {
 }
 
 Solution Colony::run() {
-  Clock clock;
+  const Clock& clock = clock_;
   Solution sol;
   sol.algorithm = p_.algorithm;
   sol.ants = p_.ants;
@@ -639,7 +694,10 @@ Solution Colony::run() {
       if (use_ls) searchers[static_cast<std::size_t>(worker)].improve(w.route, moves);
     }
     AntRoute& out = work[static_cast<std::size_t>(k)];
-    out.length = space_.route_cost(w.route);
+    // A focused ant knows its length from its walk and its search's gains;
+    // the iteration's best is measured again in full (update()).
+    if (focused) out.length = w.length - (use_ls ? searchers[static_cast<std::size_t>(worker)].gain() : 0.0);
+    else out.length = space_.route_cost(w.route);
     out.worker = worker;
     out.worn_from = w.worn.size();
     if (p_.algorithm == Algorithm::AntColonySystem) {
@@ -682,12 +740,14 @@ Solution Colony::run() {
     for (int k = 1; k < p_.ants; ++k) {
       if (work[k].length < work[ib].length) ib = k;
     }
-    const double ib_len = work[ib].length;
     const std::vector<HoleIndex>* ib_route = &work[ib].route;
     for (AntWork& w : workers) {
       if (w.best_ant == ib) ib_route = &w.best_route;
       w.best_ant = -1;
     }
+    // Measured in full: a focused ant's own sum of gains may differ in the
+    // last bits, and the best lengths must be exact.
+    const double ib_len = focused ? space_.route_cost(*ib_route) : work[ib].length;
     ++since_improvement;
     ++since_restart;
     if (focused) {

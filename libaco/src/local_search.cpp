@@ -87,7 +87,9 @@ bool LocalSearcher::try_two_opt(HoleIndex a) {
       const std::size_t i = std::min(edge_a, edge_c), j = std::max(edge_a, edge_c);
       if (j <= i + 1) continue;  // adjacent or identical edges: no 2-opt move
       if (windowed_ && (!in_window(i) || !in_window(j + 1))) continue;
-      if (two_opt_gain(i, j) > kEps) {
+      const double gain = two_opt_gain(i, j);
+      if (gain > kEps) {
+        gain_ += gain;
         apply_two_opt(i, j);
         return true;
       }
@@ -152,6 +154,7 @@ bool LocalSearcher::try_or_opt(HoleIndex a) {
             const bool reversed = rev < fwd;
             const double add = reversed ? rev : fwd;
             if (remove_gain - add > kEps) {
+              gain_ += remove_gain - add;
               move_segment(s, len, q, reversed);
               push(prev);
               push(next);
@@ -234,6 +237,7 @@ bool LocalSearcher::try_three_opt(HoleIndex t1) {
             if (t6 == v) continue;
             const double g3 = g2 + space_.d(t5, t6);
             if (g3 - space_.d(t6, t1) > kEps) {
+              gain_ += g3 - space_.d(t6, t1);
               flip(t1, t2, t4, t3);
               flip(t1, t4, t6, t5);
               for (HoleIndex t : {t1, t2, t3, t4, t5, t6}) push(t);
@@ -249,7 +253,9 @@ bool LocalSearcher::try_three_opt(HoleIndex t1) {
               if (side == 1 && t5 == t2) continue;
               const HoleIndex t6 = next(t5, side == 0 ? dir : 1 - dir);
               if (t6 == v) continue;
-              if (g2 + space_.d(t5, t6) - space_.d(t6, t1) <= kEps) continue;
+              const double gain = g2 + space_.d(t5, t6) - space_.d(t6, t1);
+              if (gain <= kEps) continue;
+              gain_ += gain;
               if (side == 0) {
                 flip(t1, t2, t5, t6);
                 flip(t1, t5, t3, t4);
@@ -304,6 +310,7 @@ bool LocalSearcher::deepen(HoleIndex t1, const HoleIndex (&t)[5], double gain) {
       if (t8 == v) continue;
       const double g8 = g + space_.d(t7, t8);
       if (g8 - space_.d(t8, t1) > kEps) {
+        gain_ += g8 - space_.d(t8, t1);
         make(t1, last, t8, t7);
         for (const auto& f : flips_) {
           for (HoleIndex x : f) push(x);
@@ -343,6 +350,7 @@ void LocalSearcher::search_whole_route_from(const HoleIndex* first, const HoleIn
 
 void LocalSearcher::improve(std::vector<HoleIndex>& route, Moves moves) {
   m_ = route.size();
+  gain_ = 0.0;
   if (m_ < 4 || cand_.k == 0) return;
   load(route);
   std::fill(queued_.begin(), queued_.end(), 0);
@@ -367,6 +375,7 @@ void LocalSearcher::improve(std::vector<HoleIndex>& route, Moves moves) {
 
 void LocalSearcher::improve_from(std::vector<HoleIndex>& route, Moves moves, const std::vector<HoleIndex>& seeds) {
   m_ = route.size();
+  gain_ = 0.0;
   if (m_ < 4 || cand_.k == 0 || seeds.empty()) return;
   load(route);
   // Whole-route search: a focused ant makes few moves, so even at a million

@@ -41,6 +41,9 @@ class alignas(64) LocalSearcher {
   // made, so the search costs what the ant changed, plus O(n) to load the route.
   void improve_from(std::vector<HoleIndex>& route, Moves moves, const std::vector<HoleIndex>& seeds);
   static constexpr std::size_t kWindow = 100000;
+  // How much shorter the last improve or improve_from made the route: the
+  // sum of its moves' gains, so a caller need not measure the whole route.
+  double gain() const { return gain_; }
 
   // For tests: measure the whole route before and after every search at a
   // hole and count those where a move did not shorten it or no move changed
@@ -85,6 +88,7 @@ class alignas(64) LocalSearcher {
   std::size_t lo_ = 0, hi_ = 0;  // positions a move may touch
   bool windowed_ = false;
   bool audit_ = false;
+  double gain_ = 0.0;
   std::size_t failed_audits_ = 0, audited_moves_ = 0;
 };
 
