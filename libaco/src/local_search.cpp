@@ -198,12 +198,19 @@ bool LocalSearcher::try_three_opt(HoleIndex t1) {
   // differently each way and are left to 2-opt and Or-opt, which read them in
   // array order.
   const HoleIndex v = space_.open() ? space_.virtual_node() : static_cast<HoleIndex>(-1);
-  // The most promising 3-opt step that did not close with a gain: where the
-  // search goes deeper when nothing closes.
+  // The most promising 3-opt steps that did not close with a gain, best
+  // first: where the search goes deeper when nothing closes.
   struct Step {
     double gain = 0.0;
     HoleIndex t[5] = {};
-  } best;
+  };
+  // The search goes deeper from the kDeepen best steps, one after the other
+  // (LKH's breadth at its first levels). Measured from nearest-neighbour
+  // routes on 7 TSPLIB drilling instances, summed gap and time of one
+  // improve(): 1 step, depth 8: 30.4 %, 0.16 s; 3 steps, depth 6: 26.5 %,
+  // 0.17 s; 3 steps, depth 20: 26.4 %, 0.43 s.
+  constexpr int kDeepen = 3;
+  Step best[kDeepen];
   for (int dir = 0; dir < 2; ++dir) {
     const HoleIndex t2 = next(t1, dir);
     if (t2 == v) continue;
@@ -243,7 +250,14 @@ bool LocalSearcher::try_three_opt(HoleIndex t1) {
               for (HoleIndex t : {t1, t2, t3, t4, t5, t6}) push(t);
               return true;
             }
-            if (g3 > best.gain) best = {g3, {t2, t3, t4, t5, t6}};
+            if (g3 > best[kDeepen - 1].gain) {
+              int q = kDeepen - 1;
+              while (q > 0 && best[q - 1].gain < g3) {
+                best[q] = best[q - 1];
+                --q;
+              }
+              best[q] = {g3, {t2, t3, t4, t5, t6}};
+            }
           } else {
             if (!between(t2, t5, t3, dir)) continue;
             for (int side = 0; side < 2; ++side) {
@@ -272,8 +286,11 @@ bool LocalSearcher::try_three_opt(HoleIndex t1) {
       }
     }
   }
-  if (best.gain <= kEps) return false;
-  return deepen(t1, best.t, best.gain);
+  for (int q = 0; q < kDeepen; ++q) {
+    if (best[q].gain <= kEps) return false;
+    if (deepen(t1, best[q].t, best[q].gain)) return true;
+  }
+  return false;
 }
 
 bool LocalSearcher::deepen(HoleIndex t1, const HoleIndex (&t)[5], double gain) {
@@ -284,7 +301,7 @@ bool LocalSearcher::deepen(HoleIndex t1, const HoleIndex (&t)[5], double gain) {
   // kDepth flips were made in vain; then every flip is undone. Flips of an
   // array route cost up to half its length, so a failed search costs
   // O(kDepth n) at worst; on a good route neighbours are near in it too.
-  constexpr int kDepth = 8;
+  constexpr int kDepth = 6;
   constexpr int kBreadth = 5;
   const HoleIndex v = space_.open() ? space_.virtual_node() : static_cast<HoleIndex>(-1);
   flips_.clear();
