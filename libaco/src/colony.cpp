@@ -50,9 +50,10 @@ constexpr std::size_t kFullListLimit = 800;
 
 // With local search, above kFullListLimit, the candidates are the
 // p.candidates (default 5) alpha-nearest among each hole's kAlphaFrom
-// nearest (LKH's candidates): on pcb3038 at 5 s (median of 3 seeds, 3-opt)
-// 0.28 % with the 12 nearest, 0.25 % with 8 alpha-nearest without the
-// ascent, 0.17 % with it, 0.12 % with 5.
+// nearest (LKH's candidates). pcb3038, 2 threads, 3-opt: at 5 s the 12
+// nearest gave 0.28 % (median of 3 seeds), 5 alpha-nearest after the ascent
+// 0.19 % (median of 8); at 15 s 0.23 % and 0.13 % (5 seeds). Without the
+// ascent alpha helped little (0.25 % at 5 s with 8 of them).
 constexpr int kAlphaFrom = 16;
 // Above this many holes the nearest are taken as they are: the ascent's
 // sorts and the tree's O(n log n) ancestor table stop paying for themselves.
@@ -117,8 +118,8 @@ struct alignas(64) AntWork {
   std::vector<double> weight;         // roulette weights over candidates
   std::unique_ptr<detail::BucketGrid> grid;  // candidate-list mode: nearest unvisited hole
   // Focused construction: visited marks by stamp (no O(n) clear per ant), the
-  // next unvisited position of the reference route (union-find with path
-  // halving), and the ends of the edges the ant made new.
+  // reference positions the ant walked (the gaps of its copy), and the ends
+  // of the edges it made new.
   std::vector<std::uint32_t> mark;
   std::uint32_t stamp = 0;
   std::vector<std::uint32_t> visited_pos;  // positions in R of the holes walked before the copy
