@@ -45,6 +45,8 @@ def main():
       "(about 20 minutes on 2 cores). Raw data: `docs/bench/`.\n")
     w(f"Machine: {machine.get('cpu')}, {machine.get('cores')} cores, {machine.get('memory')}, {machine.get('os')}, "
       f"{machine.get('compiler')}; commit {machine.get('commit')}.\n")
+    if machine.get("remeasured"):
+        w(f"Rows measured again: {machine.get('remeasured')}.\n")
     if machine.get("sections") and machine.get("sections") != "thesis targets gap speedup programs micro":
         w(f"That run measured these sections: {machine.get('sections')}; the others keep the CSVs of an earlier "
           "run (`git log docs/bench`).\n")
@@ -58,12 +60,16 @@ def main():
     if os.path.exists(path):
         w("## Gap to the optimum within a time budget\n")
         w("`acodrill tsp INSTANCE --time-limit BUDGET --threads 2 --seed K`, default settings (the focused colony "
-          "with 2-opt and Or-opt), whole-process wall time, median over seeds; gap with TSPLIB's rounded distances. "
-          "Beside it, the median of Focused ACO (R. Skinderowicz, Applied Soft Computing 2022; the author's code, "
-          "2 threads, same budgets, measured on a machine of this kind: `bench/peers.csv`), and issue 12's bound "
-          "where it set one. ✓: at or below both.\n")
-        w("| instance | budget s | median gap | min | max | Focused ACO | bound | median wall s | peak RSS MB | seeds |")
-        w("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
+          "with 2-opt, Or-opt and 3-opt with Lin-Kernighan steps, on alpha-nearness candidates), whole-process wall "
+          "time, median over seeds; gap with TSPLIB's rounded distances (CEIL_2D rounded up for pla7397). "
+          "Beside it, from `bench/peers.csv` (measured on a machine of this kind, `../shared/peers.md`): the median "
+          "of Focused ACO (R. Skinderowicz, Applied Soft Computing 2022; the author's code, 2 threads, same budgets; "
+          "at 60 s for d15112 and brd14051), LKH-3's gap at the wall time it took with that budget (1 thread, its "
+          "only mode; the budgets of pla7397, d15112 and brd14051 are that wall time), and the bound an issue set "
+          "(issue 12's; issue 24's, twice LKH-3's gap, where there is an LKH-3 figure). "
+          "✓: at or below Focused ACO and the bound.\n")
+        w("| instance | budget s | median gap | min | max | Focused ACO | LKH-3 | bound | median wall s | peak RSS MB | seeds |")
+        w("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
         by = {}
         for r in rows(path):
             by.setdefault((r["instance"], r["budget_s"]), []).append(r)
@@ -73,12 +79,14 @@ def main():
             rss = max(int(r["peak_rss_mb"]) for r in rs)
             med = statistics.median(gaps)
             peer = peers.get((inst, budget))
-            faco = float(peer["focused_aco_median_pct"]) if peer else None
+            faco = float(peer["focused_aco_median_pct"]) if peer and peer["focused_aco_median_pct"] else None
             bound = float(peer["target_pct"]) if peer and peer["target_pct"] else None
+            lkh = float(peer["lkh3_pct"]) if peer and peer.get("lkh3_pct") else None
             limits = [x for x in (faco, bound) if x is not None]
             verdict = "" if not limits else (" ✓" if med <= min(limits) + 1e-9 else " ✗")
             w(f"| {inst} | {budget} | {med:.2f} %{verdict} | {min(gaps):.2f} % | {max(gaps):.2f} % | "
-              f"{'' if faco is None else f'{faco:.2f} %'} | {'' if bound is None else f'{bound:.2f} %'} | "
+              f"{'' if faco is None else f'{faco:.2f} %'} | {'' if lkh is None else f'{lkh:.2f} %'} | "
+              f"{'' if bound is None else f'{bound:.2f} %'} | "
               f"{statistics.median(walls):.2f} | {rss} | {len(rs)} |")
         w("")
 
