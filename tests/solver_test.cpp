@@ -149,6 +149,26 @@ TEST(solver_test, same_seed_same_tour_for_1_2_and_5_threads) {
   }
 }
 
+TEST(solver_test, same_seed_same_tour_on_any_thread_count_with_3opt_and_alpha_candidates) {
+  // Above 800 holes: alpha-nearness lists after the ascent, 3-opt with deeper
+  // steps, ants that copy the reference run by run and sum their gains.
+  for (aco::Shape shape : {aco::Shape::ClosedTour, aco::Shape::OpenPath}) {
+    aco::Problem p = random_problem(1500, 12, shape);
+    aco::Params params = quick(aco::Algorithm::FocusedAcs, aco::LocalSearch::ThreeOpt);
+    params.iterations = 60;
+    params.threads = 1;
+    aco::Solution one = aco::solve(p, params);
+    params.threads = 2;
+    aco::Solution two = aco::solve(p, params);
+    params.threads = 5;
+    aco::Solution five = aco::solve(p, params);
+    EXPECT_EQ(one.order, two.order);
+    EXPECT_EQ(one.order, five.order);
+    EXPECT_NEAR(one.length, aco::route_length(p, one.order), 1e-6 * one.length);
+    EXPECT_LE(one.length, aco::route_length(p, aco::nearest_neighbor_2opt(p)));
+  }
+}
+
 TEST(solver_test, thread_busy_time_is_recorded_per_thread) {
   aco::Problem p = random_problem(200, 1);
   aco::Params params = quick(aco::Algorithm::MaxMinAntSystem);

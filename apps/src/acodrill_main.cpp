@@ -769,7 +769,7 @@ int main(int argc, char** argv) {
   SolverArgs tsp_solver;
   auto* tsp_cmd = cli.add_subcommand("tsp", "Solve a TSPLIB instance as a closed tour and print its length");
   tsp_cmd->footer("Example:\n  acodrill tsp pcb442.tsp --time-limit 1 --tour pcb442.tour");
-  tsp_cmd->add_option("instance", tsp_input, "TSPLIB .tsp file (EUC_2D)")->required();
+  tsp_cmd->add_option("instance", tsp_input, "TSPLIB .tsp file (EUC_2D, CEIL_2D or ATT; its length is printed in that rounding)")->required();
   tsp_cmd->add_option("--tour", tsp_tour, "Write the tour in TSPLIB TOUR format");
   tsp_cmd->add_flag("-q,--quiet", quiet, "Print only the length");
   add_solver_options(tsp_cmd, tsp_solver);
