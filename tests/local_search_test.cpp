@@ -118,7 +118,7 @@ TEST(local_search_test, every_move_set_keeps_a_route_never_lengthens_it_and_ends
             EXPECT_NEAR(ls.gain(), length - space.route_cost(route), 1e-9 * length);
           }
           EXPECT_EQ(ls.failed_audits(), 0u) << "moves that did not shorten the route";
-          EXPECT_GT(ls.audited_moves(), 0u);
+          EXPECT_GT(ls.audited_searches(), 0u);
           EXPECT_LE(best_two_opt_gain(space, cand, route), 1e-6);
         }
       }

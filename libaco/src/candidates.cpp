@@ -67,7 +67,6 @@ Candidates build_candidates(const Space& space, int k) {
 }
 
 Candidates alpha_candidates(const Space& space, const Candidates& nearest, int k, int ascent_iterations) {
-
   const HoleIndex n = space.holes();
   Candidates out;
   out.k = std::min(k, nearest.k);

@@ -411,7 +411,7 @@ void LocalSearcher::run_queue(Moves moves) {
     if (!moved && moves != Moves::TwoOpt) moved = try_or_opt(a);
     if (!moved && moves == Moves::ThreeOpt && !windowed_) moved = try_three_opt(a);
     if (audit_) {
-      ++audited_moves_;
+      ++audited_searches_;
       const double after = space_.route_cost(route_);
       // A move must shorten the route; a search that found none must leave it as it was.
       if (moved ? !(after < before - kEps) : std::abs(after - before) > kEps) {

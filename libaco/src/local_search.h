@@ -1,7 +1,7 @@
 #pragma once
-// 2-opt and Or-opt on an array route with neighbour lists and don't-look bits
-// (Bentley 1992; Johnson & McGeoch 1997, "The TSP: a case study in local
-// optimization"). The route is a cycle over Space::route_size() nodes whose
+// 2-opt, Or-opt and 3-opt with Lin-Kernighan's deeper steps on an array route
+// with neighbour lists and don't-look bits (Bentley 1992; Johnson & McGeoch
+// 1997, "The TSP: a case study in local optimization"). The route is a cycle over Space::route_size() nodes whose
 // position 0 never moves, so an open path's virtual node V keeps its place and
 // its direction-dependent edges stay right.
 #include <array>
@@ -46,11 +46,12 @@ class alignas(64) LocalSearcher {
   double gain() const { return gain_; }
 
   // For tests: measure the whole route before and after every search at a
-  // hole and count those where a move did not shorten it or no move changed
-  // its length (O(n) each, so never in a run). The first failure ends the search.
+  // hole, and count the searches whose move did not shorten it or that made
+  // no move yet changed it (O(n) each, so never in a run). The first failure
+  // ends the search.
   void audit(bool on) { audit_ = on; }
   std::size_t failed_audits() const { return failed_audits_; }
-  std::size_t audited_moves() const { return audited_moves_; }
+  std::size_t audited_searches() const { return audited_searches_; }
 
  private:
   void load(const std::vector<HoleIndex>& route);  // route_ and pos_ from `route` (m_ set)
@@ -89,7 +90,7 @@ class alignas(64) LocalSearcher {
   bool windowed_ = false;
   bool audit_ = false;
   double gain_ = 0.0;
-  std::size_t failed_audits_ = 0, audited_moves_ = 0;
+  std::size_t failed_audits_ = 0, audited_searches_ = 0;
 };
 
 }  // namespace aco::detail
