@@ -131,19 +131,25 @@ TEST(solver_test, never_worse_than_nearest_neighbour_with_local_search) {
   }
 }
 
+namespace {
+// Solves on 1, 2 and 5 threads, expects one route, and returns the first solution.
+aco::Solution solve_on_1_2_and_5_threads(const aco::Problem& p, aco::Params params, const std::string& what) {
+  params.threads = 1;
+  aco::Solution one = aco::solve(p, params);
+  for (int threads : {2, 5}) {
+    params.threads = threads;
+    EXPECT_EQ(aco::solve(p, params).order, one.order) << what << ", " << threads << " threads";
+  }
+  return one;
+}
+}  // namespace
+
 TEST(solver_test, same_seed_same_tour_for_1_2_and_5_threads) {
   for (auto alg : kAll) {
     aco::Problem p = random_problem(400, 11, aco::Shape::OpenPath);
     aco::Params params = quick(alg);
     params.iterations = 15;
-    params.threads = 1;
-    aco::Solution one = aco::solve(p, params);
-    params.threads = 2;
-    aco::Solution two = aco::solve(p, params);
-    params.threads = 5;
-    aco::Solution five = aco::solve(p, params);
-    EXPECT_EQ(one.order, two.order) << aco::to_string(alg);
-    EXPECT_EQ(one.order, five.order) << aco::to_string(alg);
+    const aco::Solution one = solve_on_1_2_and_5_threads(p, params, aco::to_string(alg));
     params.seed = 2;
     EXPECT_NE(aco::solve(p, params).order, one.order) << "another seed explores another way";
   }
@@ -156,14 +162,7 @@ TEST(solver_test, same_seed_same_tour_on_any_thread_count_with_3opt_and_alpha_ca
     aco::Problem p = random_problem(1500, 12, shape);
     aco::Params params = quick(aco::Algorithm::FocusedAcs, aco::LocalSearch::ThreeOpt);
     params.iterations = 60;
-    params.threads = 1;
-    aco::Solution one = aco::solve(p, params);
-    params.threads = 2;
-    aco::Solution two = aco::solve(p, params);
-    params.threads = 5;
-    aco::Solution five = aco::solve(p, params);
-    EXPECT_EQ(one.order, two.order);
-    EXPECT_EQ(one.order, five.order);
+    const aco::Solution one = solve_on_1_2_and_5_threads(p, params, shape == aco::Shape::OpenPath ? "open" : "closed");
     EXPECT_NEAR(one.length, aco::route_length(p, one.order), 1e-6 * one.length);
     EXPECT_LE(one.length, aco::route_length(p, aco::nearest_neighbor_2opt(p)));
   }

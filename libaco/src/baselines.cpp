@@ -97,13 +97,7 @@ Order greedy_edge(const Problem& problem) {
     HoleIndex a, b;
   };
   std::vector<Edge> edges;
-  edges.reserve(static_cast<std::size_t>(n) * cand.k);
-  for (HoleIndex i = 0; i < n; ++i) {
-    for (int r = 0; r < cand.k; ++r) {
-      const HoleIndex j = cand.of(i)[r];
-      if (i < j) edges.push_back({space.d(i, j), i, j});
-    }
-  }
+  for (auto [a, b] : detail::candidate_edges(cand, n)) edges.push_back({space.d(a, b), a, b});
   std::sort(edges.begin(), edges.end(), [](const Edge& x, const Edge& y) {
     return x.d < y.d || (x.d == y.d && (x.a < y.a || (x.a == y.a && x.b < y.b)));
   });

@@ -66,6 +66,18 @@ Candidates build_candidates(const Space& space, int k) {
   return c;
 }
 
+std::vector<std::pair<HoleIndex, HoleIndex>> candidate_edges(const Candidates& candidates, HoleIndex holes) {
+  std::vector<std::pair<HoleIndex, HoleIndex>> edges;
+  edges.reserve(static_cast<std::size_t>(holes) * candidates.k);
+  for (HoleIndex i = 0; i < holes; ++i) {
+    const HoleIndex* row = candidates.of(i);
+    for (int r = 0; r < candidates.k; ++r) edges.emplace_back(std::min(i, row[r]), std::max(i, row[r]));
+  }
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  return edges;
+}
+
 Candidates alpha_candidates(const Space& space, const Candidates& nearest, int k, int ascent_iterations) {
   const HoleIndex n = space.holes();
   Candidates out;
@@ -78,14 +90,7 @@ Candidates alpha_candidates(const Space& space, const Candidates& nearest, int k
     HoleIndex a, b;
   };
   std::vector<Edge> edges;
-  edges.reserve(static_cast<std::size_t>(n) * nearest.k);
-  for (HoleIndex i = 0; i < n; ++i) {
-    const HoleIndex* row = nearest.of(i);
-    for (int r = 0; r < nearest.k; ++r) edges.push_back({0.0, std::min(i, row[r]), std::max(i, row[r])});
-  }
-  std::sort(edges.begin(), edges.end(), [](const Edge& x, const Edge& y) { return x.a != y.a ? x.a < y.a : x.b < y.b; });
-  edges.erase(std::unique(edges.begin(), edges.end(), [](const Edge& x, const Edge& y) { return x.a == y.a && x.b == y.b; }),
-              edges.end());
+  for (auto [a, b] : candidate_edges(nearest, n)) edges.push_back({0.0, a, b});
   std::vector<double> length(edges.size());
   for (std::size_t e = 0; e < edges.size(); ++e) length[e] = space.d(edges[e].a, edges[e].b);
   // Kruskal with costs d(a, b) + pi[a] + pi[b]; returns the forest's cost.

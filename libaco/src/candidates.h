@@ -2,6 +2,7 @@
 // Nearest-neighbour candidate lists: for each hole its k nearest other holes,
 // nearest first. Built with a k-d tree (nanoflann) in O(n k log n), never an
 // n² scan, so 100 000 holes take well under a second.
+#include <utility>
 #include <vector>
 
 #include "space.h"
@@ -16,6 +17,10 @@ struct Candidates {
 };
 
 Candidates build_candidates(const Space& space, int k);
+
+// Every edge between a hole and one of its candidates, once, as (a, b) with
+// a < b, in that order: an edge in only one of its ends' lists counts too.
+std::vector<std::pair<HoleIndex, HoleIndex>> candidate_edges(const Candidates& candidates, HoleIndex holes);
 
 // For each hole, the k holes of `nearest`'s row with the smallest
 // alpha-nearness (Helsgaun 2000, LKH's candidates): alpha(i, j) = c(i, j)
