@@ -58,6 +58,11 @@ constexpr int kAlphaFrom = 16;
 // Above this many holes the nearest are taken as they are: the ascent's
 // sorts and the tree's O(n log n) ancestor table stop paying for themselves.
 constexpr std::size_t kAlphaLimit = 200000;
+// Whether a problem of `holes` gets alpha-nearness lists: the constructor
+// builds them and resolve() sizes them by this one rule.
+bool uses_alpha_lists(std::size_t holes, LocalSearch local_search) {
+  return local_search != LocalSearch::None && holes > kFullListLimit && holes <= kAlphaLimit;
+}
 // Subgradient steps before alpha is measured: 100 took 0.1 s on pcb3038 and
 // 1.5 s on d15112, so fewer on larger inputs (66 on d15112, 20 from 50 000),
 // and under a time limit no more than about 5 % of it at the 1.5 us per hole
@@ -152,7 +157,7 @@ class Colony {
       : problem_(problem), p_(params), space_(problem), n_(space_.holes()) {
     if (n_ <= kFullListLimit) {
       cand_ = detail::build_candidates(space_, static_cast<int>(n_) - 1);
-    } else if (p_.local_search != LocalSearch::None && n_ <= kAlphaLimit) {
+    } else if (uses_alpha_lists(n_, p_.local_search)) {
       cand_ = detail::alpha_candidates(space_, detail::build_candidates(space_, kAlphaFrom), p_.candidates,
                                        ascent_iterations(n_, p_.time_limit_s));
     } else {
@@ -915,9 +920,9 @@ Params resolve(const Params& in, std::size_t n) {
       break;
   }
   if (p.focus_edges <= 0) p.focus_edges = 16;
-  // 5 alpha-nearest measured better than the 12 nearest (see kAlphaFrom); beyond kAlphaLimit the
-  // lists are the nearest again, and keep their 12.
-  if (p.candidates <= 0) p.candidates = ls ? (n <= kAlphaLimit ? 5 : 12) : 20;
+  // 5 alpha-nearest measured better than the 12 nearest (see kAlphaFrom);
+  // where the lists are the nearest (beyond kAlphaLimit) they keep their 12.
+  if (p.candidates <= 0) p.candidates = uses_alpha_lists(n, p.local_search) ? 5 : ls ? 12 : 20;
   // Without a budget, the work grows with n: 300 iterations up to a few
   // thousand holes, fewer beyond (2e6 / n: 20 at 100 000, 3 at a million). A
   // focused iteration costs a small part of a whole-route one, so it gets ten
