@@ -190,6 +190,16 @@ void LocalSearcher::flip(HoleIndex a, HoleIndex b, HoleIndex c, HoleIndex d) {
   reverse(std::min(p, q), std::max(p, q));
 }
 
+std::size_t LocalSearcher::flip_length(HoleIndex a, HoleIndex b, HoleIndex c, HoleIndex d) const {
+  if (route_[succ(pos_[a])] != b) {
+    std::swap(a, b);
+    std::swap(c, d);
+  }
+  const std::size_t p = pos_[a], q = pos_[c];
+  const std::size_t inner = p < q ? q - p : p - q;
+  return !space_.open() && !windowed_ ? std::min(inner, m_ - inner) : inner;
+}
+
 bool LocalSearcher::try_three_opt(HoleIndex t1) {
   // Names follow Lin & Kernighan: x1 = (t1,t2) out, y1 = (t2,t3) in,
   // x2 = (t3,t4) out, y2 = (t4,t5) in, x3 = (t5,t6) out, y3 = (t6,t1) in.
@@ -309,7 +319,15 @@ bool LocalSearcher::deepen(HoleIndex t1, const HoleIndex (&t)[5], double gain) {
     flip(a, b, c, d);
     flips_.push_back({a, b, c, d});
   };
+  auto undo = [&] {  // flip(a, c, b, d) undoes flip(a, b, c, d)
+    for (auto f = flips_.rbegin(); f != flips_.rend(); ++f) flip((*f)[0], (*f)[2], (*f)[1], (*f)[3]);
+  };
+  if (flip_length(t1, t[0], t[2], t[1]) > kDeepenReach) return false;
   make(t1, t[0], t[2], t[1]);
+  if (flip_length(t1, t[2], t[4], t[3]) > kDeepenReach) {
+    undo();
+    return false;
+  }
   make(t1, t[2], t[4], t[3]);
   HoleIndex last = t[4];
   for (int depth = 2; depth < kDepth; ++depth) {
@@ -334,7 +352,7 @@ bool LocalSearcher::deepen(HoleIndex t1, const HoleIndex (&t)[5], double gain) {
         }
         return true;
       }
-      if (g8 > best_g) {
+      if (g8 > best_g && flip_length(t1, last, t8, t7) <= kDeepenReach) {
         best_g = g8;
         b7 = t7;
         b8 = t8;
@@ -345,8 +363,7 @@ bool LocalSearcher::deepen(HoleIndex t1, const HoleIndex (&t)[5], double gain) {
     gain = best_g;
     last = b8;
   }
-  // Nothing closed with a gain: undo. flip(a, c, b, d) undoes flip(a, b, c, d).
-  for (auto f = flips_.rbegin(); f != flips_.rend(); ++f) flip((*f)[0], (*f)[2], (*f)[1], (*f)[3]);
+  undo();  // nothing closed with a gain
   return false;
 }
 
