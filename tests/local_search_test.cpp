@@ -223,4 +223,67 @@ TEST(local_search_test, the_ascent_keeps_rows_valid_and_changes_them) {
   EXPECT_GT(differ, space.holes() / 50);
 }
 
+TEST(local_search_test, alpha_lists_are_the_same_on_any_thread_count) {
+  const aco::Problem p = random_problem(3000, 5, aco::Shape::ClosedTour, true);
+  const aco::detail::Space space(p);
+  const aco::detail::Candidates nearest =
+      aco::detail::with_quadrant_neighbours(space, aco::detail::build_candidates(space, 16));
+  const aco::detail::Candidates one = aco::detail::alpha_candidates(space, nearest, 5, 30, 1);
+  for (int threads : {2, 3}) {
+    EXPECT_EQ(aco::detail::alpha_candidates(space, nearest, 5, 30, threads).list, one.list) << threads << " threads";
+  }
+}
+
+// Which quadrant around `from` a point is in, as bucket_grid.h counts them.
+int quadrant_of(aco::Point2 from, aco::Point2 p) {
+  const double dx = p.x - from.x, dy = p.y - from.y;
+  if (dx > 0 && dy >= 0) return 0;
+  if (dx <= 0 && dy > 0) return 1;
+  if (dx < 0 && dy <= 0) return 2;
+  if (dx >= 0 && dy < 0) return 3;
+  return -1;
+}
+
+TEST(local_search_test, quadrant_neighbours_are_the_nearest_in_each_quadrant_and_join_clusters) {
+  // Twelve tight clusters: the 16 nearest of every hole are in its own cluster.
+  const aco::Problem p = random_problem(600, 4, aco::Shape::ClosedTour, true);
+  const aco::detail::Space space(p);
+  const HoleIndex n = space.holes();
+  const aco::detail::Candidates nearest = aco::detail::build_candidates(space, 16);
+  const aco::detail::Candidates joined = aco::detail::with_quadrant_neighbours(space, nearest);
+  ASSERT_EQ(joined.k, 16);
+  for (HoleIndex i = 0; i < n; ++i) {
+    const HoleIndex* row = joined.of(i);
+    EXPECT_EQ(std::set<HoleIndex>(row, row + 16).size(), 16u);
+    for (int r = 1; r < 16; ++r) EXPECT_LE(space.d(i, row[r - 1]), space.d(i, row[r]));
+    // Brute force: the nearest hole in each quadrant is in the row.
+    for (int q = 0; q < 4; ++q) {
+      HoleIndex best = n;
+      for (HoleIndex j = 0; j < n; ++j) {
+        if (j == i || quadrant_of(space.point(i), space.point(j)) != q) continue;
+        if (best == n || space.d(i, j) < space.d(i, best)) best = j;
+      }
+      if (best == n) continue;
+      bool found = false;
+      for (int r = 0; r < 16; ++r) found = found || space.d(i, row[r]) == space.d(i, best);
+      EXPECT_TRUE(found) << "hole " << i << " quadrant " << q;
+    }
+  }
+  // The rows as a graph: the nearest alone fall apart, with the quadrants one piece.
+  auto pieces = [&](const aco::detail::Candidates& c) {
+    std::vector<HoleIndex> root(n);
+    std::iota(root.begin(), root.end(), 0);
+    auto find = [&](HoleIndex x) {
+      while (root[x] != x) x = root[x] = root[root[x]];
+      return x;
+    };
+    for (auto [a, b] : aco::detail::candidate_edges(c, n)) root[find(a)] = find(b);
+    std::set<HoleIndex> roots;
+    for (HoleIndex i = 0; i < n; ++i) roots.insert(find(i));
+    return roots.size();
+  };
+  EXPECT_GT(pieces(nearest), 1u);
+  EXPECT_EQ(pieces(joined), 1u);
+}
+
 }  // namespace

@@ -5,6 +5,7 @@
 // without allocating, so one grid serves an ant for the whole run. When a
 // ring would cost more than scanning what is left, the rest is scanned.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numeric>
@@ -108,6 +109,64 @@ class BucketGrid {
       if (best != UINT32_MAX && best_d <= r * cell_) return best;
       if (r > nx_ + ny_) return best;
     }
+  }
+
+  // The nearest remaining hole to hole `i` by dist(h) in each quadrant
+  // around it: [0°, 90°), [90°, 180°), [180°, 270°), [270°, 360°), so every
+  // other hole falls in exactly one unless it coincides with `i`. UINT32_MAX
+  // where a quadrant holds none within `max_rings` rings of cells. Their union
+  // over all holes (the Yao graph with four cones) is connected where the
+  // 16 nearest fall apart into clusters.
+  template <class Dist>
+  std::array<HoleIndex, 4> nearest_by_quadrant(HoleIndex i, Dist&& dist, int max_rings) const {
+    const Point2 from = s_.point(i);
+    const int cx = clampx(from.x), cy = clampy(from.y);
+    std::array<HoleIndex, 4> best;
+    best.fill(UINT32_MAX);
+    std::array<double, 4> best_d;
+    best_d.fill(std::numeric_limits<double>::infinity());
+    auto quadrant = [&](Point2 p) {
+      const double dx = p.x - from.x, dy = p.y - from.y;
+      if (dx > 0 && dy >= 0) return 0;
+      if (dx <= 0 && dy > 0) return 1;
+      if (dx < 0 && dy <= 0) return 2;
+      if (dx >= 0 && dy < 0) return 3;
+      return -1;  // the same point
+    };
+    // Grid cells a quadrant can reach: (x sign, y sign) of its cells from (cx, cy).
+    const int reach_x[4] = {nx_ - 1 - cx, cx, cx, nx_ - 1 - cx};
+    const int reach_y[4] = {ny_ - 1 - cy, ny_ - 1 - cy, cy, cy};
+    for (int r = 0; r <= max_rings; ++r) {
+      bool open = false;
+      for (int q = 0; q < 4; ++q) {
+        // Done when its best is nearer than anything outside ring r - 1, or
+        // when the rings have covered all the grid on its side.
+        const bool done = (best[q] != UINT32_MAX && best_d[q] <= (r - 1) * cell_) ||
+                          (r > std::max(reach_x[q], reach_y[q]));
+        open = open || !done;
+      }
+      if (!open) break;
+      for (int y = cy - r; y <= cy + r; ++y) {
+        if (y < 0 || y >= ny_) continue;
+        const bool edge_row = (y == cy - r || y == cy + r);
+        const int step = edge_row || r == 0 ? 1 : 2 * r;
+        for (int x = cx - r; x <= cx + r; x += step) {
+          if (x < 0 || x >= nx_) continue;
+          const std::size_t c = static_cast<std::size_t>(y) * nx_ + x;
+          for (HoleIndex k = start_[c], e = start_[c] + count_[c]; k < e; ++k) {
+            const HoleIndex h = items_[k];
+            const int q = quadrant(s_.point(h));
+            if (q < 0 || h == i) continue;
+            const double d = dist(h);
+            if (d < best_d[q] || (d == best_d[q] && h < best[q])) {
+              best_d[q] = d;
+              best[q] = h;
+            }
+          }
+        }
+      }
+    }
+    return best;
   }
 
  private:

@@ -1,11 +1,14 @@
 #include "candidates.h"
 
+#include "bucket_grid.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
 #include <nanoflann.hpp>
 #include <numeric>
+#include <parallel/algorithm>
 #include <utility>
 
 namespace aco::detail {
@@ -66,6 +69,34 @@ Candidates build_candidates(const Space& space, int k) {
   return c;
 }
 
+Candidates with_quadrant_neighbours(const Space& space, Candidates nearest) {
+  const HoleIndex n = space.holes();
+  const int k = nearest.k;
+  if (k < 4) return nearest;
+  BucketGrid grid(space);
+  std::vector<HoleIndex> quadrant, row;
+  for (HoleIndex i = 0; i < n; ++i) {
+    HoleIndex* out = nearest.list.data() + static_cast<std::size_t>(i) * k;
+    quadrant.clear();
+    for (HoleIndex q : grid.nearest_by_quadrant(i, [&](HoleIndex h) { return space.d(i, h); }, kQuadrantRings)) {
+      if (q != UINT32_MAX && std::find(quadrant.begin(), quadrant.end(), q) == quadrant.end()) quadrant.push_back(q);
+    }
+    // The quadrant neighbours, and the nearest of the rest to fill the row,
+    // sorted by distance (a quadrant neighbour outside the k nearest is no
+    // nearer than any of them, so this is the row with its last places given up).
+    row = quadrant;
+    for (int r = 0; r < k && row.size() < static_cast<std::size_t>(k); ++r) {
+      if (std::find(quadrant.begin(), quadrant.end(), out[r]) == quadrant.end()) row.push_back(out[r]);
+    }
+    std::sort(row.begin(), row.end(), [&](HoleIndex a, HoleIndex b) {
+      const double da = space.d(i, a), db = space.d(i, b);
+      return da < db || (da == db && a < b);
+    });
+    std::copy(row.begin(), row.end(), out);
+  }
+  return nearest;
+}
+
 std::vector<std::pair<HoleIndex, HoleIndex>> candidate_edges(const Candidates& candidates, HoleIndex holes) {
   std::vector<std::pair<HoleIndex, HoleIndex>> edges;
   edges.reserve(static_cast<std::size_t>(holes) * candidates.k);
@@ -78,7 +109,7 @@ std::vector<std::pair<HoleIndex, HoleIndex>> candidate_edges(const Candidates& c
   return edges;
 }
 
-Candidates alpha_candidates(const Space& space, const Candidates& nearest, int k, int ascent_iterations) {
+Candidates alpha_candidates(const Space& space, const Candidates& nearest, int k, int ascent_iterations, int threads) {
   const HoleIndex n = space.holes();
   Candidates out;
   out.k = std::min(k, nearest.k);
@@ -106,7 +137,13 @@ Candidates alpha_candidates(const Space& space, const Candidates& nearest, int k
       edges[e].cost = length[e] + pi[edges[e].a] + pi[edges[e].b];
       order[e] = {edges[e].cost, static_cast<std::uint32_t>(e)};
     }
-    std::sort(order.begin(), order.end());
+    // The order is total (cost, then edge), so a parallel sort gives the
+    // same tree as a serial one; the sorts are most of the ascent.
+    if (threads > 1) {
+      __gnu_parallel::sort(order.begin(), order.end(), __gnu_parallel::multiway_mergesort_tag(threads));
+    } else {
+      std::sort(order.begin(), order.end());
+    }
     std::iota(root.begin(), root.end(), 0);
     in_tree.clear();
     double total = 0.0;
@@ -127,11 +164,12 @@ Candidates alpha_candidates(const Space& space, const Candidates& nearest, int k
   double step = 0.0;
   // The step shrinks to 5 % of its first size by the last iteration.
   const double decay = std::pow(0.05, 1.0 / std::max(1, ascent_iterations));
-  // Only where the neighbour graph holds one tree: on a forest (separate
-  // clusters whose 16 nearest never cross, as in fl1400 and brd14051) the
-  // ascent made the lists worse. Measured, 2 threads: fl1400 at 5 s median of
-  // 3 seeds 0.68 % with it, 0.00 % without; brd14051 at 65 s, 2 seeds,
-  // 0.19-0.22 % with it, 0.16 % without.
+  // Only where the neighbour graph holds one tree. Over the 16 nearest alone
+  // the clusters of fl1400 and brd14051 stayed apart, and the ascent on that
+  // forest made the lists worse (fl1400 at 5 s: 0.68 % with it, 0.00 %
+  // without); with_quadrant_neighbours joins them, and with the ascent the
+  // 5 lists of brd14051 miss 23 edges of a 0.12 % route, against 102 without.
+  // A forest now means degenerate input (many holes on one spot).
   const double plain_tree = forest(pi);
   if (in_tree.size() + 1 < static_cast<std::size_t>(n)) ascent_iterations = 0;
   for (int it = 0; it < ascent_iterations; ++it) {
@@ -222,7 +260,11 @@ Candidates alpha_candidates(const Space& space, const Candidates& nearest, int k
     if (up[a] != up[b]) return -1.0;  // different trees
     return std::max({m, longest[a], longest[b]});
   };
+  // Rows are independent: any split among threads gives the same lists.
+#pragma omp parallel num_threads(std::max(1, threads))
+  {
   std::vector<std::pair<double, int>> row;
+#pragma omp for schedule(static)
   for (HoleIndex i = 0; i < n; ++i) {
     const HoleIndex* nr = nearest.of(i);
     row.clear();
@@ -235,6 +277,7 @@ Candidates alpha_candidates(const Space& space, const Candidates& nearest, int k
     std::sort(row.begin(), row.begin() + out.k, [](auto x, auto y) { return x.second < y.second; });
     HoleIndex* o = out.list.data() + static_cast<std::size_t>(i) * out.k;
     for (int r = 0; r < out.k; ++r) o[r] = nr[row[r].second];
+  }
   }
   return out;
 }

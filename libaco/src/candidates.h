@@ -18,6 +18,19 @@ struct Candidates {
 
 Candidates build_candidates(const Space& space, int k);
 
+// How far (in rings of the bucket grid, about 1.4 mean hole spacings each)
+// the quadrant search looks: far enough to join the clusters of fl1400 and
+// brd14051, and bounded so that a hole with an empty quadrant (every hole of
+// a diagonal line has two) costs at most 65² cells, not the whole grid.
+constexpr int kQuadrantRings = 32;
+
+// `nearest` (sorted by distance, k >= 4) with each row's last places given to
+// the hole's nearest neighbour in each of the four quadrants around it where
+// that is not already in the row. The k nearest of holes in a cluster are all
+// in the cluster; the quadrant neighbours link clusters, so a minimum spanning
+// tree over these rows is one tree, not a forest (Yao graph with four cones).
+Candidates with_quadrant_neighbours(const Space& space, Candidates nearest);
+
 // Every edge between a hole and one of its candidates, once, as (a, b) with
 // a < b, in that order: an edge in only one of its ends' lists counts too.
 std::vector<std::pair<HoleIndex, HoleIndex>> candidate_edges(const Candidates& candidates, HoleIndex holes);
@@ -31,6 +44,8 @@ std::vector<std::pair<HoleIndex, HoleIndex>> candidate_edges(const Candidates& c
 // the nearer hole first; each row is then sorted by distance, which the local
 // search's pruning needs. Where the neighbour graph falls apart into several
 // trees, an edge between two of them has alpha 0. Memory O(n k + n log n).
-Candidates alpha_candidates(const Space& space, const Candidates& nearest, int k, int ascent_iterations);
+// `threads` share the sorts and the rows; the lists do not depend on how many.
+Candidates alpha_candidates(const Space& space, const Candidates& nearest, int k, int ascent_iterations,
+                            int threads = 1);
 
 }  // namespace aco::detail

@@ -158,8 +158,9 @@ class Colony {
     if (n_ <= kFullListLimit) {
       cand_ = detail::build_candidates(space_, static_cast<int>(n_) - 1);
     } else if (uses_alpha_lists(n_, p_.local_search)) {
-      cand_ = detail::alpha_candidates(space_, detail::build_candidates(space_, kAlphaFrom), p_.candidates,
-                                       ascent_iterations(n_, p_.time_limit_s));
+      cand_ = detail::alpha_candidates(space_,
+                                       detail::with_quadrant_neighbours(space_, detail::build_candidates(space_, kAlphaFrom)),
+                                       p_.candidates, ascent_iterations(n_, p_.time_limit_s), p_.threads);
     } else {
       cand_ = detail::build_candidates(space_, p_.candidates);
     }
