@@ -28,6 +28,7 @@
 #include "candidates.h"
 #include "local_search.h"
 #include "parallel.h"
+#include "recombine.h"
 #include "rng.h"
 #include "space.h"
 #include "trail.h"
@@ -150,6 +151,10 @@ struct alignas(64) AntRoute {
   int worker = 0;                      // whose `worn` list holds this ant's slots,
   std::size_t worn_from = 0, worn_to = 0;  // and where
   double length = 0.0;
+  // Focused colony: whether the ant improved the reference, and then its
+  // route as an exchange of edges against it (recombine.h).
+  bool improves = false;
+  detail::RouteDiff diff;
 };
 
 class Colony {
@@ -326,7 +331,8 @@ void Colony::rewrite_reference(const std::vector<HoleIndex>& route) {
   // read them (an open path has V first and one direction already).
   std::size_t from = 0;
   bool backward = false;
-  if (!space_.open()) {
+  // A merged route (recombine.h) starts where R does, the same way round.
+  if (!space_.open() && !(route[0] == ref_route_[0] && route[1] == ref_route_[1])) {
     from = static_cast<std::size_t>(std::find(route.begin(), route.end(), ref_route_[0]) - route.begin());
     // Which way the old route runs: look where some node's old successor is.
     // (Rarely past the first probe: an ant changes a short stretch.)
@@ -736,6 +742,8 @@ Solution Colony::run() {
       for (std::size_t i = 0; i + 1 < w.seeds.size(); i += 2) add_worn_slots(w.seeds[i], w.seeds[i + 1], w.worn);
     }
     out.worn_to = w.worn.size();
+    out.improves = focused && out.length < ref_len_ - 1e-9;
+    if (out.improves) detail::route_diff(ref_route_, ref_pos_, w.route, out.diff);
     if (!focused) {
       std::swap(out.route, w.route);
     } else if (w.best_ant < 0 || out.length < w.best_length || (out.length == w.best_length && k < w.best_ant)) {
@@ -760,6 +768,10 @@ Solution Colony::run() {
     const std::size_t mid = p1 + (p3 - p2);  // where the swapped blocks now meet
     for (const std::size_t q : {p1, p1 + 1, mid, mid + 1, p3, (p3 + 1) % mm}) seeds.push_back(r[q]);
   };
+  detail::DiffMerger merger;
+  std::vector<int> improving;
+  std::vector<const detail::RouteDiff*> diffs;
+  std::vector<HoleIndex> merged;
   // After the barrier, on one thread: says whether to run another iteration.
   auto update = [&]() -> bool {
     // Deterministic reduction: shortest, ties to the lowest ant index.
@@ -780,6 +792,32 @@ Solution Colony::run() {
     const bool ib_plateau = focused && ib_len <= ref_len_ + 1e-6 && !is_reference(*ib_route);
     if (focused && (ib_plateau || ib_len < best_len - 1e-9 || ib_len < restart_best_len - 1e-9)) {
       ib_len = space_.route_cost(*ib_route);
+    }
+    if (focused && work[ib].improves) {
+      // The other ants' improvements elsewhere on the route, added to the best's.
+      improving.clear();
+      for (int k = 0; k < p_.ants; ++k) {
+        if (work[k].improves) improving.push_back(k);
+      }
+      std::sort(improving.begin(), improving.end(), [&](int a, int b) {
+        return work[a].length < work[b].length || (work[a].length == work[b].length && a < b);
+      });
+      // An open path's V keeps the successor it has in R, or in the best ant's
+      // route if that ant changed it; no other ant may change it.
+      const HoleIndex v = ref_route_[0];
+      const bool best_moves_v = space_.open() && work[ib].diff.touches(v);
+      diffs.clear();
+      for (int k : improving) {
+        if (k == ib || !space_.open() || !work[k].diff.touches(v)) diffs.push_back(&work[k].diff);
+      }
+      if (diffs.size() >= 2 &&
+          merger.merge(ref_route_, ref_pos_, diffs, best_moves_v ? (*ib_route)[1] : ref_route_[1], merged) >= 2) {
+        const double merged_len = space_.route_cost(merged);
+        if (merged_len < ib_len - 1e-9) {
+          ib_route = &merged;
+          ib_len = merged_len;
+        }
+      }
     }
     ++since_improvement;
     ++since_restart;
