@@ -58,7 +58,7 @@ void add_solver_options(CLI::App* cmd, SolverArgs& a) {
                   "it stalls and a restart when kicks stop helping; measured best "
                   "from 198 to 15112 holes, docs/benchmarks.md), acs (Ant Colony System over whole routes), mmas "
                   "(MAX-MIN), as (the thesis's Ant System)");
-  cmd->add_option("--ants", a.ants, "Ants per iteration (default: 10 with local search, else min(n,100))")
+  cmd->add_option("--ants", a.ants, "Ants per iteration (default: 10 with local search, 20 for focused above 10 000 holes; else min(n,100))")
       ->check(CLI::Range(1, 100000));
   cmd->add_option("--alpha", a.alpha, "Pheromone weight (default 1)")->check(CLI::Range(0.0, 100.0));
   cmd->add_option("--beta", a.beta, "Distance weight (default: as 4, mmas/acs 2)")->check(CLI::Range(0.0, 100.0));

@@ -100,6 +100,7 @@ constexpr std::size_t kKickSpan = 50;
 // of a second (pcb442 at 1 s: optimal in 8 of 25 seeds; with it 18 of 25;
 // d1291 at 5 s, median of 5 seeds: 0.30 % -> 0.00 %).
 constexpr std::size_t kReinforceHoles = 10000;
+constexpr std::size_t kManyAntsFrom = 10000;
 constexpr int kRestartAfter = 300;
 constexpr int kRestartKicks = 100;
 
@@ -990,7 +991,14 @@ Params resolve(const Params& in, std::size_t n) {
     case Algorithm::FocusedAcs:
       if (p.beta < 0) p.beta = 2.0;
       if (p.rho < 0) p.rho = 0.1;
-      if (p.ants <= 0) p.ants = 10;
+      // Focused ants above kManyAntsFrom holes: 20, since the improvements of
+      // an iteration's ants are merged and an iteration's serial part grows
+      // with n. Measured at 2 threads, seeds 1-3: brd14051 at 65 s 0.138 0.140
+      // 0.166 % with 10, 0.126 0.111 0.116 % with 20, 0.161 0.134 0.162 %
+      // with 40; d15112 at 64 s 0.174 0.170 0.176 % with 10, 0.160 0.127
+      // 0.176 % with 20; E100k at 60 s (seed 1) 226.72e6 and 226.69e6. On
+      // pcb3038 (15 s, 5 seeds) 10, 20 and 40 were alike: 0.110, 0.118, 0.102 %.
+      if (p.ants <= 0) p.ants = p.algorithm == Algorithm::FocusedAcs && n > kManyAntsFrom ? 20 : 10;
       break;
   }
   if (p.focus_edges <= 0) p.focus_edges = 16;
