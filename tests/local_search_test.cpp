@@ -284,6 +284,11 @@ TEST(local_search_test, quadrant_neighbours_are_the_nearest_in_each_quadrant_and
   };
   EXPECT_GT(pieces(nearest), 1u);
   EXPECT_EQ(pieces(joined), 1u);
+  // joined_nearest joins only what falls apart: these clusters, not uniform holes.
+  EXPECT_EQ(aco::detail::joined_nearest(space, 16).list, joined.list);
+  const aco::Problem uniform = random_problem(600, 4, aco::Shape::ClosedTour, false);
+  const aco::detail::Space uniform_space(uniform);
+  EXPECT_EQ(aco::detail::joined_nearest(uniform_space, 16).list, aco::detail::build_candidates(uniform_space, 16).list);
 }
 
 }  // namespace

@@ -97,6 +97,25 @@ Candidates with_quadrant_neighbours(const Space& space, Candidates nearest) {
   return nearest;
 }
 
+Candidates joined_nearest(const Space& space, int k) {
+  Candidates nearest = build_candidates(space, k);
+  const HoleIndex n = space.holes();
+  std::vector<HoleIndex> root(n);
+  std::iota(root.begin(), root.end(), 0);
+  auto find = [&](HoleIndex x) {
+    while (root[x] != x) x = root[x] = root[root[x]];
+    return x;
+  };
+  HoleIndex pieces = n;
+  for (auto [a, b] : candidate_edges(nearest, n)) {
+    const HoleIndex ra = find(a), rb = find(b);
+    if (ra == rb) continue;
+    root[ra] = rb;
+    --pieces;
+  }
+  return pieces > 1 ? with_quadrant_neighbours(space, std::move(nearest)) : nearest;
+}
+
 std::vector<std::pair<HoleIndex, HoleIndex>> candidate_edges(const Candidates& candidates, HoleIndex holes) {
   std::vector<std::pair<HoleIndex, HoleIndex>> edges;
   edges.reserve(static_cast<std::size_t>(holes) * candidates.k);

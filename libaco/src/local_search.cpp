@@ -322,9 +322,9 @@ bool LocalSearcher::deepen(HoleIndex t1, const HoleIndex (&t)[5], double gain) {
   auto undo = [&] {  // flip(a, c, b, d) undoes flip(a, b, c, d)
     for (auto f = flips_.rbegin(); f != flips_.rend(); ++f) flip((*f)[0], (*f)[2], (*f)[1], (*f)[3]);
   };
-  if (flip_length(t1, t[0], t[2], t[1]) > kDeepenReach) return false;
+  if (flip_length(t1, t[0], t[2], t[1]) > deepen_reach()) return false;
   make(t1, t[0], t[2], t[1]);
-  if (flip_length(t1, t[2], t[4], t[3]) > kDeepenReach) {
+  if (flip_length(t1, t[2], t[4], t[3]) > deepen_reach()) {
     undo();
     return false;
   }
@@ -352,7 +352,7 @@ bool LocalSearcher::deepen(HoleIndex t1, const HoleIndex (&t)[5], double gain) {
         }
         return true;
       }
-      if (g8 > best_g && flip_length(t1, last, t8, t7) <= kDeepenReach) {
+      if (g8 > best_g && flip_length(t1, last, t8, t7) <= deepen_reach()) {
         best_g = g8;
         b7 = t7;
         b8 = t8;
