@@ -73,7 +73,10 @@ def main():
         by = {}
         for r in rows(path):
             by.setdefault((r["instance"], r["budget_s"]), []).append(r)
-        for (inst, budget), rs in by.items():
+        # In bench/peers.csv's order, whatever order the rows were measured in.
+        order = list(peers.keys())
+        rank = lambda key: order.index(key) if key in order else len(order)
+        for (inst, budget), rs in sorted(by.items(), key=lambda kv: rank(kv[0])):
             gaps = [float(r["gap_pct"]) for r in rs]
             walls = [float(r["wall_s"]) for r in rs]
             rss = max(int(r["peak_rss_mb"]) for r in rs)
