@@ -746,7 +746,8 @@ Solution Colony::run() {
       for (std::size_t i = 0; i + 1 < w.seeds.size(); i += 2) add_worn_slots(w.seeds[i], w.seeds[i + 1], w.worn);
     }
     out.worn_to = w.worn.size();
-    out.improves = focused && out.length < ref_len_ - 1e-9;
+    // Only where update() merges them (above kManyAntsFrom holes).
+    out.improves = focused && n_ > kManyAntsFrom && out.length < ref_len_ - 1e-9;
     if (out.improves) detail::route_diff(ref_route_, ref_pos_, w.route, out.diff);
     if (!focused) {
       std::swap(out.route, w.route);
@@ -797,7 +798,7 @@ Solution Colony::run() {
     if (focused && (ib_plateau || ib_len < best_len - 1e-9 || ib_len < restart_best_len - 1e-9)) {
       ib_len = space_.route_cost(*ib_route);
     }
-    if (focused && work[ib].improves && n_ > kManyAntsFrom) {
+    if (focused && work[ib].improves) {
       // The other ants' improvements elsewhere on the route, added to the best's.
       improving.clear();
       for (int k = 0; k < p_.ants; ++k) {
