@@ -223,17 +223,6 @@ TEST(local_search_test, the_ascent_keeps_rows_valid_and_changes_them) {
   EXPECT_GT(differ, space.holes() / 50);
 }
 
-TEST(local_search_test, alpha_lists_are_the_same_on_any_thread_count) {
-  const aco::Problem p = random_problem(3000, 5, aco::Shape::ClosedTour, true);
-  const aco::detail::Space space(p);
-  const aco::detail::Candidates nearest =
-      aco::detail::with_quadrant_neighbours(space, aco::detail::build_candidates(space, 16));
-  const aco::detail::Candidates one = aco::detail::alpha_candidates(space, nearest, 5, 30, 1);
-  for (int threads : {2, 3}) {
-    EXPECT_EQ(aco::detail::alpha_candidates(space, nearest, 5, 30, threads).list, one.list) << threads << " threads";
-  }
-}
-
 // Which quadrant around `from` a point is in, as bucket_grid.h counts them.
 int quadrant_of(aco::Point2 from, aco::Point2 p) {
   const double dx = p.x - from.x, dy = p.y - from.y;

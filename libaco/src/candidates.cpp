@@ -8,7 +8,6 @@
 #include <limits>
 #include <nanoflann.hpp>
 #include <numeric>
-#include <parallel/algorithm>
 #include <utility>
 
 namespace aco::detail {
@@ -128,7 +127,7 @@ std::vector<std::pair<HoleIndex, HoleIndex>> candidate_edges(const Candidates& c
   return edges;
 }
 
-Candidates alpha_candidates(const Space& space, const Candidates& nearest, int k, int ascent_iterations, int threads) {
+Candidates alpha_candidates(const Space& space, const Candidates& nearest, int k, int ascent_iterations) {
   const HoleIndex n = space.holes();
   Candidates out;
   out.k = std::min(k, nearest.k);
@@ -156,13 +155,7 @@ Candidates alpha_candidates(const Space& space, const Candidates& nearest, int k
       edges[e].cost = length[e] + pi[edges[e].a] + pi[edges[e].b];
       order[e] = {edges[e].cost, static_cast<std::uint32_t>(e)};
     }
-    // The order is total (cost, then edge), so a parallel sort gives the
-    // same tree as a serial one; the sorts are most of the ascent.
-    if (threads > 1) {
-      __gnu_parallel::sort(order.begin(), order.end(), __gnu_parallel::multiway_mergesort_tag(threads));
-    } else {
-      std::sort(order.begin(), order.end());
-    }
+    std::sort(order.begin(), order.end());
     std::iota(root.begin(), root.end(), 0);
     in_tree.clear();
     double total = 0.0;
@@ -279,11 +272,7 @@ Candidates alpha_candidates(const Space& space, const Candidates& nearest, int k
     if (up[a] != up[b]) return -1.0;  // different trees
     return std::max({m, longest[a], longest[b]});
   };
-  // Rows are independent: any split among threads gives the same lists.
-#pragma omp parallel num_threads(std::max(1, threads))
-  {
   std::vector<std::pair<double, int>> row;
-#pragma omp for schedule(static)
   for (HoleIndex i = 0; i < n; ++i) {
     const HoleIndex* nr = nearest.of(i);
     row.clear();
@@ -296,7 +285,6 @@ Candidates alpha_candidates(const Space& space, const Candidates& nearest, int k
     std::sort(row.begin(), row.begin() + out.k, [](auto x, auto y) { return x.second < y.second; });
     HoleIndex* o = out.list.data() + static_cast<std::size_t>(i) * out.k;
     for (int r = 0; r < out.k; ++r) o[r] = nr[row[r].second];
-  }
   }
   return out;
 }

@@ -50,8 +50,6 @@ std::vector<std::pair<HoleIndex, HoleIndex>> candidate_edges(const Candidates& c
 // the nearer hole first; each row is then sorted by distance, which the local
 // search's pruning needs. Where the neighbour graph falls apart into several
 // trees, an edge between two of them has alpha 0. Memory O(n k + n log n).
-// `threads` share the sorts and the rows; the lists do not depend on how many.
-Candidates alpha_candidates(const Space& space, const Candidates& nearest, int k, int ascent_iterations,
-                            int threads = 1);
+Candidates alpha_candidates(const Space& space, const Candidates& nearest, int k, int ascent_iterations);
 
 }  // namespace aco::detail

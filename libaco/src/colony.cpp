@@ -170,7 +170,7 @@ class Colony {
       cand_ = detail::build_candidates(space_, static_cast<int>(n_) - 1);
     } else if (uses_alpha_lists(n_, p_.local_search)) {
       cand_ = detail::alpha_candidates(space_, detail::joined_nearest(space_, kAlphaFrom), p_.candidates,
-                                       ascent_iterations(n_, p_.time_limit_s), p_.threads);
+                                       ascent_iterations(n_, p_.time_limit_s));
     } else {
       cand_ = detail::build_candidates(space_, p_.candidates);
     }
