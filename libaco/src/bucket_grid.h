@@ -94,17 +94,7 @@ class BucketGrid {
         for (HoleIndex h : alive_) consider(h);
         return best;
       }
-      for (int y = cy - r; y <= cy + r; ++y) {
-        if (y < 0 || y >= ny_) continue;
-        const bool edge_row = (y == cy - r || y == cy + r);
-        const int step = edge_row || r == 0 ? 1 : 2 * r;
-        for (int x = cx - r; x <= cx + r; x += step) {
-          if (x < 0 || x >= nx_) continue;
-          const std::size_t c = static_cast<std::size_t>(y) * nx_ + x;
-          for (HoleIndex k = start_[c], e = start_[c] + count_[c]; k < e; ++k) consider(items_[k]);
-          ++scanned;
-        }
-      }
+      scanned += for_each_in_ring(cx, cy, r, consider);
       // Every hole outside ring r is at least r cells away, in any of our metrics.
       if (best != UINT32_MAX && best_d <= r * cell_) return best;
       if (r > nx_ + ny_) return best;
@@ -146,30 +136,39 @@ class BucketGrid {
         open = open || !done;
       }
       if (!open) break;
-      for (int y = cy - r; y <= cy + r; ++y) {
-        if (y < 0 || y >= ny_) continue;
-        const bool edge_row = (y == cy - r || y == cy + r);
-        const int step = edge_row || r == 0 ? 1 : 2 * r;
-        for (int x = cx - r; x <= cx + r; x += step) {
-          if (x < 0 || x >= nx_) continue;
-          const std::size_t c = static_cast<std::size_t>(y) * nx_ + x;
-          for (HoleIndex k = start_[c], e = start_[c] + count_[c]; k < e; ++k) {
-            const HoleIndex h = items_[k];
-            const int q = quadrant(s_.point(h));
-            if (q < 0 || h == i) continue;
-            const double d = dist(h);
-            if (d < best_d[q] || (d == best_d[q] && h < best[q])) {
-              best_d[q] = d;
-              best[q] = h;
-            }
-          }
+      for_each_in_ring(cx, cy, r, [&](HoleIndex h) {
+        const int q = quadrant(s_.point(h));
+        if (q < 0 || h == i) return;
+        const double d = dist(h);
+        if (d < best_d[q] || (d == best_d[q] && h < best[q])) {
+          best_d[q] = d;
+          best[q] = h;
         }
-      }
+      });
     }
     return best;
   }
 
  private:
+  // Calls visit(h) for every remaining hole in the cells at Chebyshev
+  // distance r from cell (cx, cy); returns how many cells that was.
+  template <class Visit>
+  std::size_t for_each_in_ring(int cx, int cy, int r, Visit&& visit) const {
+    std::size_t cells = 0;
+    for (int y = cy - r; y <= cy + r; ++y) {
+      if (y < 0 || y >= ny_) continue;
+      const bool edge_row = (y == cy - r || y == cy + r);
+      const int step = edge_row || r == 0 ? 1 : 2 * r;
+      for (int x = cx - r; x <= cx + r; x += step) {
+        if (x < 0 || x >= nx_) continue;
+        const std::size_t c = static_cast<std::size_t>(y) * nx_ + x;
+        for (HoleIndex k = start_[c], e = start_[c] + count_[c]; k < e; ++k) visit(items_[k]);
+        ++cells;
+      }
+    }
+    return cells;
+  }
+
   int clampx(double x) const { return std::clamp(static_cast<int>((x - x0_) / cell_), 0, nx_ - 1); }
   int clampy(double y) const { return std::clamp(static_cast<int>((y - y0_) / cell_), 0, ny_ - 1); }
   std::size_t cell_of(Point2 p) const { return static_cast<std::size_t>(clampy(p.y)) * nx_ + clampx(p.x); }
