@@ -69,6 +69,7 @@ std::size_t DiffMerger::merge(const std::vector<HoleIndex>& ref, const std::vect
   removed_.clear();
   added_.clear();
   std::size_t applied = 0;
+  bool current = true;  // whether one_cycle's state (order_) is that of the exchanges applied
   for (const RouteDiff* d : diffs) {
     if (d->removed.empty() || d->removed.size() != d->added.size()) continue;
     bool disjoint = true;
@@ -79,7 +80,8 @@ std::size_t DiffMerger::merge(const std::vector<HoleIndex>& ref, const std::vect
     const std::size_t removed_before = removed_.size(), added_before = added_.size();
     removed_.insert(removed_.end(), d->removed.begin(), d->removed.end());
     added_.insert(added_.end(), d->added.begin(), d->added.end());
-    if (!one_cycle(ref, ref_pos)) {
+    current = one_cycle(ref, ref_pos);
+    if (!current) {
       removed_.resize(removed_before);
       added_.resize(added_before);
       continue;
@@ -88,7 +90,7 @@ std::size_t DiffMerger::merge(const std::vector<HoleIndex>& ref, const std::vect
     ++applied;
   }
   if (applied > 0) {
-    one_cycle(ref, ref_pos);  // order_ for the exchanges applied
+    if (!current) one_cycle(ref, ref_pos);  // the last one tried was left out
     build(ref, first_next, out);
   }
   return applied;
