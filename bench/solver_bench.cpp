@@ -48,6 +48,17 @@ void BM_candidates_reference_n2(benchmark::State& state) {
   state.SetComplexityN(state.range(0));
 }
 
+// --- Alpha-nearness lists: 100 steps of the Held-Karp ascent, each a
+// minimum spanning tree over the 16-nearest graph, then 5 alpha-nearest --
+
+void BM_alpha_candidates_100_ascent_steps(benchmark::State& state) {
+  aco::Problem p = make_problem(static_cast<std::size_t>(state.range(0)));
+  aco::detail::Space space(p);
+  const aco::detail::Candidates nearest = aco::detail::joined_nearest(space, 16);
+  for (auto _ : state) benchmark::DoNotOptimize(aco::detail::alpha_candidates(space, nearest, 5, 100));
+  state.SetComplexityN(state.range(0));
+}
+
 // --- One iteration of one ant without local search: candidate lists with a
 // cached choice (ours, through solve) vs the textbook scan of all unvisited
 // holes with pow() at every step -------------------------------------------
@@ -172,6 +183,7 @@ void BM_pheromone_update_reference_dense(benchmark::State& state) {
 
 BENCHMARK(BM_candidates_kdtree)->RangeMultiplier(4)->Range(64, 16384)->Complexity();
 BENCHMARK(BM_candidates_reference_n2)->RangeMultiplier(4)->Range(64, 4096)->Complexity();
+BENCHMARK(BM_alpha_candidates_100_ascent_steps)->RangeMultiplier(4)->Range(1024, 16384)->Complexity();
 BENCHMARK(BM_one_ant_tour_ours)->RangeMultiplier(4)->Range(64, 16384);
 BENCHMARK(BM_one_ant_tour_reference)->RangeMultiplier(4)->Range(64, 4096);
 BENCHMARK(BM_two_opt_neighbour_lists)->RangeMultiplier(4)->Range(64, 16384);
