@@ -44,7 +44,7 @@ class SpanningForest {
   };
   SpanningForest(std::vector<Edge> edges, HoleIndex holes)
       : edges_(std::move(edges)), n_(holes), first_arc_(static_cast<std::size_t>(holes) + 1, 0),
-        spanned_(holes), offer_cost_(holes), offer_edge_(holes), heap_at_(holes, kOutside) {
+        offer_cost_(holes), offer_edge_(holes), heap_at_(holes, kOutside) {
     for (const Edge& e : edges_) {
       ++first_arc_[e.a + 1];
       ++first_arc_[e.b + 1];
@@ -53,8 +53,8 @@ class SpanningForest {
     arcs_.resize(first_arc_[n_]);
     std::vector<std::uint32_t> fill(first_arc_.begin(), first_arc_.end() - 1);
     for (std::uint32_t e = 0; e < edges_.size(); ++e) {
-      arcs_[fill[edges_[e].a]++] = {edges_[e].b, e};
-      arcs_[fill[edges_[e].b]++] = {edges_[e].a, e};
+      arcs_[fill[edges_[e].a]++] = {edges_[e].b, e, edges_[e].length};
+      arcs_[fill[edges_[e].b]++] = {edges_[e].a, e, edges_[e].length};
     }
   }
   const std::vector<Edge>& edges() const { return edges_; }
@@ -66,11 +66,10 @@ class SpanningForest {
   // Grows the forest under `pi` and returns its cost, summed in tree() order;
   // the tree's edges' `cost` is then up to date.
   double grow(const std::vector<double>& pi) {
-    std::fill(spanned_.begin(), spanned_.end(), 0);
     std::fill(offer_cost_.begin(), offer_cost_.end(), std::numeric_limits<double>::infinity());
     tree_.clear();
     for (HoleIndex root = 0; root < n_; ++root) {
-      if (spanned_[root]) continue;
+      if (offer_cost_[root] == kSpanned) continue;
       span(root, pi);
       while (!heap_.empty()) {
         const HoleIndex h = pop();
@@ -86,9 +85,12 @@ class SpanningForest {
 
  private:
   static constexpr std::uint32_t kOutside = UINT32_MAX;
+  // A spanned hole's offer: no edge's cost is below it.
+  static constexpr double kSpanned = -std::numeric_limits<double>::infinity();
   struct Arc {
     HoleIndex to;
     std::uint32_t edge;
+    double length;
   };
   // Summed as (length + pi[a]) + pi[b], a < b, whichever end is reached first:
   // the same bits from either side.
@@ -103,13 +105,14 @@ class SpanningForest {
     heap_at_[h] = static_cast<std::uint32_t>(i);
   }
   void span(HoleIndex h, const std::vector<double>& pi) {
-    spanned_[h] = 1;
+    offer_cost_[h] = kSpanned;
+    const double* p = pi.data();
     const Arc* arc = arcs_.data() + first_arc_[h];
     const Arc* end = arcs_.data() + first_arc_[h + 1];
     for (; arc != end; ++arc) {
       const HoleIndex to = arc->to;
-      if (spanned_[to]) continue;
-      const double c = cost(arc->edge, pi);
+      // cost(arc->edge, pi), read from the arc: the same sum, in the same order.
+      const double c = arc->length + p[std::min(h, to)] + p[std::max(h, to)];
       if (!(c < offer_cost_[to] || (c == offer_cost_[to] && arc->edge < offer_edge_[to]))) continue;
       offer_cost_[to] = c;
       offer_edge_[to] = arc->edge;
@@ -147,7 +150,6 @@ class SpanningForest {
   HoleIndex n_;
   std::vector<std::uint32_t> first_arc_;
   std::vector<Arc> arcs_;
-  std::vector<char> spanned_;
   // For each hole not yet spanned: its best offer (cost, edge), and its place in heap_.
   std::vector<double> offer_cost_;
   std::vector<std::uint32_t> offer_edge_, heap_at_;
