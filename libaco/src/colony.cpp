@@ -94,11 +94,15 @@ constexpr double kWear = 0.1;
 constexpr std::size_t kKickSpan = 50;
 // After this many iterations in which the colony's best since its last
 // restart did not improve (some ten kicks in vain), the colony restarts: the
-// best route shaken by max(kRestartKicks, n / 50) such double bridges and
-// improved by a whole local search becomes the reference, on a fresh trail;
-// the best so far is kept apart. Without it a run stalled in its first tenth
-// of a second (pcb442 at 1 s: optimal in 8 of 25 seeds; with it 18 of 25;
-// d1291 at 5 s, median of 5 seeds: 0.30 % -> 0.00 %).
+// best route so far, shaken by max(kRestartKicks, n / 50) such double bridges
+// and improved by a whole local search, becomes the reference, on a fresh
+// trail. Without it a run stalled in its first tenth of a second (pcb442 at
+// 1 s: optimal in 8 of 25 seeds; with it 18 of 25; d1291 at 5 s, median of 5
+// seeds: 0.30 % -> 0.00 %). Restarting from the best so far rather than from
+// the last restart's best, with 200 bridges rather than 100: pcb3038 at 15 s,
+// seeds 1-10, median 0.103 % -> 0.052 %; fnl4461 at 20 s 0.134 -> 0.107 %
+// (seeds 1-5). Each alone did less (from the best, 100 bridges: pcb3038
+// 0.087 %), and 30 or 400 bridges did worse (0.147 %, 0.12 %).
 constexpr std::size_t kReinforceHoles = 10000;
 // Above this many holes a focused iteration has 20 ants (resolve()) and their
 // improvements are merged (update()); on pla7397 (30 s, 3 seeds) merging
@@ -106,7 +110,7 @@ constexpr std::size_t kReinforceHoles = 10000;
 // on pcb3038 the same (0.110 % at 15 s), on 100 000 holes far better.
 constexpr std::size_t kManyAntsFrom = 10000;
 constexpr int kRestartAfter = 300;
-constexpr int kRestartKicks = 100;
+constexpr int kRestartKicks = 200;
 
 class Clock {
  public:
@@ -846,13 +850,12 @@ Solution Colony::run() {
         if (better) ref_stall_ = 0;
       } else if (walk && kick_searcher_) {
         // Stuck: every ant's changes were repaired back to the reference. Kick
-        // the colony's best (since its last restart) with a local double
-        // bridge, repair that by local search and go on from there even if it
-        // is worse; long stuck, restart (kRestartAfter). The best so far is
-        // kept apart.
+        // the colony's best since its last restart with a local double bridge,
+        // repair that by local search and go on from there even if it is
+        // worse; long stuck, restart from the best so far (kRestartAfter).
         Rng krng(p_.seed ^ 0x9E3779B97F4A7C15ULL, static_cast<std::uint64_t>(it), 0xFFFF);
-        std::vector<HoleIndex> r = restart_best;  // not a wandering reference
         const bool restart = since_restart >= kRestartAfter;
+        std::vector<HoleIndex> r = restart ? best_route : restart_best;  // not a wandering reference
         std::vector<HoleIndex> seeds;
         const int kicks = restart ? std::max<int>(kRestartKicks, static_cast<int>(n_ / 50)) : 1;
         for (int q = 0; q < kicks; ++q) double_bridge(r, krng, seeds);
