@@ -32,7 +32,7 @@ using Tree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<do
 // ties broken by edge index: a strict order, so the forest is unique and
 // Prim finds the one Kruskal would. Kruskal sorted all n k edges at every
 // step, 80 % of the ascent (pcb1173: 83 ms of a 350 ms run); Prim looks at
-// each edge once and keeps only the frontier in its heap, where a better
+// each edge from its two ends and keeps only the frontier in its heap, where a better
 // offer moves a hole up instead of adding a second entry (a heap of every
 // offer was as slow as the sort).
 class SpanningForest {
@@ -40,7 +40,7 @@ class SpanningForest {
   struct Edge {
     HoleIndex a, b;  // a < b
     double length;
-    double cost = 0.0;  // length + pi[a] + pi[b] at the last grow()
+    double cost = 0.0;  // of a tree edge: length + pi[a] + pi[b] at the last grow()
   };
   SpanningForest(std::vector<Edge> edges, HoleIndex holes)
       : edges_(std::move(edges)), n_(holes), first_arc_(static_cast<std::size_t>(holes) + 1, 0),
