@@ -100,9 +100,9 @@ constexpr std::size_t kKickSpan = 50;
 // 1 s: optimal in 8 of 25 seeds; with it 18 of 25; d1291 at 5 s, median of 5
 // seeds: 0.30 % -> 0.00 %). Restarting from the best so far rather than from
 // the last restart's best, with 200 bridges rather than 100: pcb3038 at 15 s,
-// seeds 1-10, median 0.103 % -> 0.052 %; fnl4461 at 20 s 0.134 -> 0.107 %
-// (seeds 1-5). Each alone did less (from the best, 100 bridges: pcb3038
-// 0.087 %), and 30 or 400 bridges did worse (0.147 %, 0.12 %).
+// seeds 1-10, median 0.103 % -> 0.052 % (0.056 % in a second run);
+// fnl4461 at 20 s 0.134 -> 0.107 % (seeds 1-5). From the best with 100
+// bridges pcb3038 gave 0.087 %; with 30 or 400 worse (0.147 %, 0.12 %).
 constexpr std::size_t kReinforceHoles = 10000;
 // Above this many holes a focused iteration has 20 ants (resolve()) and their
 // improvements are merged (update()); on pla7397 (30 s, 3 seeds) merging
