@@ -235,12 +235,16 @@ Candidates joined_nearest(const Space& space, int k) {
     while (root[x] != x) x = root[x] = root[root[x]];
     return x;
   };
+  // Straight from the rows: a union of two joined holes does nothing, so the
+  // sorted edge list that alpha_candidates builds anyway is not needed here.
   HoleIndex pieces = n;
-  for (auto [a, b] : candidate_edges(nearest, n)) {
-    const HoleIndex ra = find(a), rb = find(b);
-    if (ra == rb) continue;
-    root[ra] = rb;
-    --pieces;
+  for (HoleIndex a = 0; a < n; ++a) {
+    for (int r = 0; r < nearest.k; ++r) {
+      const HoleIndex ra = find(a), rb = find(nearest.of(a)[r]);
+      if (ra == rb) continue;
+      root[ra] = rb;
+      --pieces;
+    }
   }
   return pieces > 1 ? with_quadrant_neighbours(space, std::move(nearest)) : nearest;
 }
