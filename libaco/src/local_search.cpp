@@ -201,119 +201,119 @@ std::size_t LocalSearcher::flip_length(HoleIndex a, HoleIndex b, HoleIndex c, Ho
 }
 
 bool LocalSearcher::try_three_opt(HoleIndex t1) {
-  // Names follow Lin & Kernighan: x1 = (t1,t2) out, y1 = (t2,t3) in,
-  // x2 = (t3,t4) out, y2 = (t4,t5) in, x3 = (t5,t6) out, y3 = (t6,t1) in.
-  // Gains are partial sums that must stay positive (the gain criterion).
-  // V, an open path's start and end, is never t1..t6: its edges cost
-  // differently each way and are left to 2-opt and Or-opt, which read them in
-  // array order.
   const HoleIndex v = space_.open() ? space_.virtual_node() : static_cast<HoleIndex>(-1);
-  // The most promising 3-opt steps that did not close with a gain, best
-  // first: where the search goes deeper when nothing closes.
-  struct Step {
-    double gain = 0.0;
-    HoleIndex t[5] = {};
-  };
   // The search goes deeper from the kDeepen best steps, one after the other
   // (LKH's breadth at its first levels). Measured from nearest-neighbour
   // routes on 7 TSPLIB drilling instances, summed gap and time of one
-  // improve(): 1 step, depth 8: 30.4 %, 0.16 s; 3 steps, depth 6: 26.5 %,
-  // 0.17 s; 3 steps, depth 20: 26.4 %, 0.43 s.
+  // improve(), when the deeper steps were 2-opt steps: 1 step, depth 8:
+  // 30.4 %, 0.16 s; 3 steps, depth 6: 26.5 %, 0.17 s; 3 steps, depth 20:
+  // 26.4 %, 0.43 s.
   constexpr int kDeepen = 3;
   Step best[kDeepen];
   for (int dir = 0; dir < 2; ++dir) {
     const HoleIndex t2 = next(t1, dir);
     if (t2 == v) continue;
-    const double d12 = space_.d(t1, t2);
-    const HoleIndex* n2 = cand_.of(t2);
-    for (int r3 = 0; r3 < cand_.k; ++r3) {
-      const HoleIndex t3 = n2[r3];
-      const double g1 = d12 - space_.d(t2, t3);
-      if (g1 <= kEps) break;
-      if (t3 == t1 || t3 == next(t2, dir)) continue;
-      for (int stretch = 0; stretch < 2; ++stretch) {
-        // stretch 0: t4 before t3, so closing up would be a 2-opt move, and a
-        //   second flip follows; stretch 1: t4 after t3, so t2..t3 is cut out
-        //   whole and must be put back between t5 and t6 inside it.
-        const HoleIndex t4 = next(t3, stretch == 0 ? 1 - dir : dir);
-        if (t4 == v || t4 == t1 || t4 == t2) continue;
-        const double g1x = g1 + space_.d(t3, t4);
-        const HoleIndex* n4 = cand_.of(t4);
-        for (int r5 = 0; r5 < cand_.k; ++r5) {
-          const HoleIndex t5 = n4[r5];
-          const double g2 = g1x - space_.d(t4, t5);
-          if (g2 <= kEps) break;
-          if (t5 == t3 || t5 == t1) continue;
-          if (stretch == 0) {
-            // After the first flip the route reads t1 t4 ... t2 t3 ...; t6
-            // must precede t5 in that reading: t5's old successor inside the
-            // turned stretch t2..t4, its old predecessor outside it.
-            const bool inside = between(t2, t5, t4, dir);
-            if (t5 == next(t4, 1 - dir) && inside) continue;  // t5 is t4's new neighbour
-            const HoleIndex t6 = next(t5, inside ? dir : 1 - dir);
+    if (three_opt_step(t1, dir, space_.d(t1, t2), best, kDeepen)) return true;
+  }
+  for (int q = 0; q < kDeepen; ++q) {
+    if (best[q].gain <= kEps) return false;
+    if (deepen(t1, best[q])) return true;
+  }
+  return false;
+}
+
+bool LocalSearcher::three_opt_step(HoleIndex t1, int dir, double gain, Step* best, int keep) {
+  // Names follow Lin & Kernighan: x1 = (t1,t2) out, y1 = (t2,t3) in,
+  // x2 = (t3,t4) out, y2 = (t4,t5) in, x3 = (t5,t6) out, y3 = (t6,t1) in.
+  // Gains are partial sums that must stay positive (the gain criterion);
+  // `gain` is the first, x1's length, or deeper down what the steps before
+  // gained with x1 taken out.
+  // V, an open path's start and end, is never t1..t6: its edges cost
+  // differently each way and are left to 2-opt and Or-opt, which read them in
+  // array order.
+  const HoleIndex v = space_.open() ? space_.virtual_node() : static_cast<HoleIndex>(-1);
+  const HoleIndex t2 = next(t1, dir);
+  const HoleIndex* n2 = cand_.of(t2);
+  for (int r3 = 0; r3 < cand_.k; ++r3) {
+    const HoleIndex t3 = n2[r3];
+    const double g1 = gain - space_.d(t2, t3);
+    if (g1 <= kEps) break;
+    if (t3 == t1 || t3 == next(t2, dir)) continue;
+    for (int stretch = 0; stretch < 2; ++stretch) {
+      // stretch 0: t4 before t3, so closing up would be a 2-opt move, and a
+      //   second flip follows; stretch 1: t4 after t3, so t2..t3 is cut out
+      //   whole and must be put back between t5 and t6 inside it.
+      const HoleIndex t4 = next(t3, stretch == 0 ? 1 - dir : dir);
+      if (t4 == v || t4 == t1 || t4 == t2) continue;
+      const double g1x = g1 + space_.d(t3, t4);
+      const HoleIndex* n4 = cand_.of(t4);
+      for (int r5 = 0; r5 < cand_.k; ++r5) {
+        const HoleIndex t5 = n4[r5];
+        const double g2 = g1x - space_.d(t4, t5);
+        if (g2 <= kEps) break;
+        if (t5 == t3 || t5 == t1) continue;
+        if (stretch == 0) {
+          // After the first flip the route reads t1 t4 ... t2 t3 ...; t6
+          // must precede t5 in that reading: t5's old successor inside the
+          // turned stretch t2..t4, its old predecessor outside it.
+          const bool inside = between(t2, t5, t4, dir);
+          if (t5 == next(t4, 1 - dir) && inside) continue;  // t5 is t4's new neighbour
+          const HoleIndex t6 = next(t5, inside ? dir : 1 - dir);
+          if (t6 == v) continue;
+          const double g3 = g2 + space_.d(t5, t6);
+          if (g3 - space_.d(t6, t1) > kEps) {
+            gain_ += g3 - space_.d(t6, t1);
+            flip(t1, t2, t4, t3);
+            flip(t1, t4, t6, t5);
+            for (HoleIndex t : {t1, t2, t3, t4, t5, t6}) push(t);
+            return true;
+          }
+          if (g3 > best[keep - 1].gain) {
+            int q = keep - 1;
+            while (q > 0 && best[q - 1].gain < g3) {
+              best[q] = best[q - 1];
+              --q;
+            }
+            best[q] = {g3, {t2, t3, t4, t5, t6}};
+          }
+        } else {
+          if (!between(t2, t5, t3, dir)) continue;
+          for (int side = 0; side < 2; ++side) {
+            // side 0: t6 after t5, the stretch goes back as it was (in two
+            // pieces swapped); side 1: t6 before t5, both pieces turned.
+            if (side == 0 && t5 == t3) continue;
+            if (side == 1 && t5 == t2) continue;
+            const HoleIndex t6 = next(t5, side == 0 ? dir : 1 - dir);
             if (t6 == v) continue;
-            const double g3 = g2 + space_.d(t5, t6);
-            if (g3 - space_.d(t6, t1) > kEps) {
-              gain_ += g3 - space_.d(t6, t1);
-              flip(t1, t2, t4, t3);
-              flip(t1, t4, t6, t5);
-              for (HoleIndex t : {t1, t2, t3, t4, t5, t6}) push(t);
-              return true;
+            const double total = g2 + space_.d(t5, t6) - space_.d(t6, t1);
+            if (total <= kEps) continue;
+            gain_ += total;
+            if (side == 0) {
+              flip(t1, t2, t5, t6);
+              flip(t1, t5, t3, t4);
+              flip(t1, t3, t6, t2);
+            } else {
+              flip(t1, t2, t6, t5);
+              flip(t2, t5, t3, t4);
             }
-            if (g3 > best[kDeepen - 1].gain) {
-              int q = kDeepen - 1;
-              while (q > 0 && best[q - 1].gain < g3) {
-                best[q] = best[q - 1];
-                --q;
-              }
-              best[q] = {g3, {t2, t3, t4, t5, t6}};
-            }
-          } else {
-            if (!between(t2, t5, t3, dir)) continue;
-            for (int side = 0; side < 2; ++side) {
-              // side 0: t6 after t5, the stretch goes back as it was (in two
-              // pieces swapped); side 1: t6 before t5, both pieces turned.
-              if (side == 0 && t5 == t3) continue;
-              if (side == 1 && t5 == t2) continue;
-              const HoleIndex t6 = next(t5, side == 0 ? dir : 1 - dir);
-              if (t6 == v) continue;
-              const double gain = g2 + space_.d(t5, t6) - space_.d(t6, t1);
-              if (gain <= kEps) continue;
-              gain_ += gain;
-              if (side == 0) {
-                flip(t1, t2, t5, t6);
-                flip(t1, t5, t3, t4);
-                flip(t1, t3, t6, t2);
-              } else {
-                flip(t1, t2, t6, t5);
-                flip(t2, t5, t3, t4);
-              }
-              for (HoleIndex t : {t1, t2, t3, t4, t5, t6}) push(t);
-              return true;
-            }
+            for (HoleIndex t : {t1, t2, t3, t4, t5, t6}) push(t);
+            return true;
           }
         }
       }
     }
   }
-  for (int q = 0; q < kDeepen; ++q) {
-    if (best[q].gain <= kEps) return false;
-    if (deepen(t1, best[q].t, best[q].gain)) return true;
-  }
   return false;
 }
 
-bool LocalSearcher::deepen(HoleIndex t1, const HoleIndex (&t)[5], double gain) {
-  // Lin-Kernighan's deeper steps (Lin & Kernighan 1973), one way at each
-  // level: the 3-opt step is made, then edge (t1, last) is taken out again
-  // and the route closed by one more flip, choosing at each level the
-  // neighbour that leaves the largest partial gain, until a closing gains or
-  // kDepth flips were made in vain; then every flip is undone. Flips of an
-  // array route cost up to half its length, so a failed search costs
-  // O(kDepth n) at worst; on a good route neighbours are near in it too.
-  constexpr int kDepth = 6;
-  constexpr int kBreadth = 5;
-  const HoleIndex v = space_.open() ? space_.virtual_node() : static_cast<HoleIndex>(-1);
+bool LocalSearcher::deepen(HoleIndex t1, Step step) {
+  // Lin-Kernighan's deeper steps, each a whole sequential 3-opt step as LKH
+  // chains its basis moves (Helsgaun 2000): the step is made, then edge
+  // (t1, t6) is taken out again and the best 3-opt step from t6 searched,
+  // closing with (t_last, t1), until one closes with a gain or kDeepSteps
+  // were searched in vain; then every flip is undone. Flips of an array route
+  // cost up to half its length, so a failed search costs O(kDeepSteps n) at
+  // worst; on a good route neighbours are near in it too.
   flips_.clear();
   auto make = [&](HoleIndex a, HoleIndex b, HoleIndex c, HoleIndex d) {
     flip(a, b, c, d);
@@ -322,46 +322,22 @@ bool LocalSearcher::deepen(HoleIndex t1, const HoleIndex (&t)[5], double gain) {
   auto undo = [&] {  // flip(a, c, b, d) undoes flip(a, b, c, d)
     for (auto f = flips_.rbegin(); f != flips_.rend(); ++f) flip((*f)[0], (*f)[2], (*f)[1], (*f)[3]);
   };
-  if (flip_length(t1, t[0], t[2], t[1]) > deepen_reach()) return false;
-  make(t1, t[0], t[2], t[1]);
-  if (flip_length(t1, t[2], t[4], t[3]) > deepen_reach()) {
-    undo();
-    return false;
-  }
-  make(t1, t[2], t[4], t[3]);
-  HoleIndex last = t[4];
-  for (int depth = 2; depth < kDepth; ++depth) {
-    const int dir = route_[succ(pos_[t1])] == last ? 0 : 1;
-    const HoleIndex after_last = next(last, dir);
-    const HoleIndex* nl = cand_.of(last);
-    double best_g = kEps;
-    HoleIndex b7 = v, b8 = v;
-    for (int r = 0; r < std::min(kBreadth, cand_.k); ++r) {
-      const HoleIndex t7 = nl[r];
-      const double g = gain - space_.d(last, t7);
-      if (g <= kEps) break;
-      if (t7 == t1 || t7 == after_last) continue;
-      const HoleIndex t8 = next(t7, 1 - dir);
-      if (t8 == v) continue;
-      const double g8 = g + space_.d(t7, t8);
-      if (g8 - space_.d(t8, t1) > kEps) {
-        gain_ += g8 - space_.d(t8, t1);
-        make(t1, last, t8, t7);
-        for (const auto& f : flips_) {
-          for (HoleIndex x : f) push(x);
-        }
-        return true;
+  for (int searched = 0; searched < kDeepSteps; ++searched) {
+    const HoleIndex(&t)[5] = step.t;  // t2..t6
+    if (flip_length(t1, t[0], t[2], t[1]) > deepen_reach()) break;
+    make(t1, t[0], t[2], t[1]);
+    if (flip_length(t1, t[2], t[4], t[3]) > deepen_reach()) break;
+    make(t1, t[2], t[4], t[3]);
+    const int dir = route_[succ(pos_[t1])] == t[4] ? 0 : 1;  // t6 is now t1's neighbour
+    Step deeper[1];
+    if (three_opt_step(t1, dir, step.gain, deeper, 1)) {
+      for (const auto& f : flips_) {
+        for (HoleIndex x : f) push(x);
       }
-      if (g8 > best_g && flip_length(t1, last, t8, t7) <= deepen_reach()) {
-        best_g = g8;
-        b7 = t7;
-        b8 = t8;
-      }
+      return true;
     }
-    if (b7 == v) break;
-    make(t1, last, b8, b7);
-    gain = best_g;
-    last = b8;
+    if (deeper[0].gain <= kEps) break;
+    step = deeper[0];
   }
   undo();  // nothing closed with a gain
   return false;
