@@ -213,7 +213,7 @@ bool LocalSearcher::try_three_opt(HoleIndex t1) {
   for (int dir = 0; dir < 2; ++dir) {
     const HoleIndex t2 = next(t1, dir);
     if (t2 == v) continue;
-    if (three_opt_step(t1, dir, space_.d(t1, t2), best, kDeepen)) return true;
+    if (three_opt_step(t1, dir, space_.d(t1, t2), best, kDeepen, cand_.k)) return true;
   }
   for (int q = 0; q < kDeepen; ++q) {
     if (best[q].gain <= kEps) return false;
@@ -222,7 +222,7 @@ bool LocalSearcher::try_three_opt(HoleIndex t1) {
   return false;
 }
 
-bool LocalSearcher::three_opt_step(HoleIndex t1, int dir, double gain, Step* best, int keep) {
+bool LocalSearcher::three_opt_step(HoleIndex t1, int dir, double gain, Step* best, int keep, int breadth) {
   // Names follow Lin & Kernighan: x1 = (t1,t2) out, y1 = (t2,t3) in,
   // x2 = (t3,t4) out, y2 = (t4,t5) in, x3 = (t5,t6) out, y3 = (t6,t1) in.
   // Gains are partial sums that must stay positive (the gain criterion);
@@ -234,7 +234,7 @@ bool LocalSearcher::three_opt_step(HoleIndex t1, int dir, double gain, Step* bes
   const HoleIndex v = space_.open() ? space_.virtual_node() : static_cast<HoleIndex>(-1);
   const HoleIndex t2 = next(t1, dir);
   const HoleIndex* n2 = cand_.of(t2);
-  for (int r3 = 0; r3 < cand_.k; ++r3) {
+  for (int r3 = 0; r3 < breadth; ++r3) {
     const HoleIndex t3 = n2[r3];
     const double g1 = gain - space_.d(t2, t3);
     if (g1 <= kEps) break;
@@ -247,7 +247,7 @@ bool LocalSearcher::three_opt_step(HoleIndex t1, int dir, double gain, Step* bes
       if (t4 == v || t4 == t1 || t4 == t2) continue;
       const double g1x = g1 + space_.d(t3, t4);
       const HoleIndex* n4 = cand_.of(t4);
-      for (int r5 = 0; r5 < cand_.k; ++r5) {
+      for (int r5 = 0; r5 < breadth; ++r5) {
         const HoleIndex t5 = n4[r5];
         const double g2 = g1x - space_.d(t4, t5);
         if (g2 <= kEps) break;
@@ -330,7 +330,7 @@ bool LocalSearcher::deepen(HoleIndex t1, Step step) {
     make(t1, t[2], t[4], t[3]);
     const int dir = route_[succ(pos_[t1])] == t[4] ? 0 : 1;  // t6 is now t1's neighbour
     Step deeper[1];
-    if (three_opt_step(t1, dir, step.gain, deeper, 1)) {
+    if (three_opt_step(t1, dir, step.gain, deeper, 1, std::min(kDeepBreadth, cand_.k))) {
       for (const auto& f : flips_) {
         for (HoleIndex x : f) push(x);
       }
