@@ -329,15 +329,15 @@ bool LocalSearcher::deepen(HoleIndex t1, Step step) {
     if (flip_length(t1, t[2], t[4], t[3]) > deepen_reach()) break;
     make(t1, t[2], t[4], t[3]);
     const int dir = route_[succ(pos_[t1])] == t[4] ? 0 : 1;  // t6 is now t1's neighbour
-    Step deeper[1];
-    if (three_opt_step(t1, dir, step.gain, deeper, 1, std::min(kDeepBreadth, cand_.k))) {
+    Step deeper;
+    if (three_opt_step(t1, dir, step.gain, &deeper, 1, std::min(kDeepBreadth, cand_.k))) {
       for (const auto& f : flips_) {
         for (HoleIndex x : f) push(x);
       }
       return true;
     }
-    if (deeper[0].gain <= kEps) break;
-    step = deeper[0];
+    if (deeper.gain <= kEps) break;
+    step = deeper;
   }
   undo();  // nothing closed with a gain
   return false;
