@@ -13,25 +13,31 @@ def rows(path):
         return list(csv.DictReader(f))
 
 
-def speedup_against_cpus(w, summary, cpu_rows):
-    """Two threads against the best the two fastest CPUs can do: 1 / (1 / t_a + 1 / t_b)."""
-    cpus = sorted({int(r["cpu"]) for r in cpu_rows})
-    by_config = {}
+def speedup_against_cpus(w, cpu_rows):
+    """Two threads against the best the two fastest CPUs can do, 1 / (1 / t_a + 1 / t_b), seed by seed."""
+    cpus = sorted({r["cpu"] for r in cpu_rows if r["cpu"] != "any"}, key=int)
+    runs = {}  # (algorithm, iterations) -> seed -> cpu -> wall
     for r in cpu_rows:
-        by_config.setdefault((r["algorithm"], r["iterations"]), {})[int(r["cpu"])] = float(r["wall_median_s"])
-    two = {(r["algorithm"], r["iterations"]): float(r["wall_median_s"]) for r in summary if r["threads"] == "2"}
-    w("One thread pinned to each CPU (`taskset -c K`, same seeds): a virtual machine's CPUs need not be equally "
-      "fast, and an unpinned one-thread run lands on any. Two threads can at best take 1 / (1 / t_a + 1 / t_b) "
-      "on the two fastest (serial part aside); the last column is how close they come.\n")
+        runs.setdefault((r["algorithm"], int(r["iterations"])), {}).setdefault(r["seed"], {})[r["cpu"]] = float(r["wall_s"])
+    w("One thread pinned to each CPU (`taskset -c K`), then two threads, back to back for each seed "
+      "(`acobench --first-seed K --seeds 1`): a virtual machine's CPUs need not be equally fast, an unpinned "
+      "one-thread run lands on any, and the machine's speed drifts within minutes. Two threads can at best take "
+      "1 / (1 / t_a + 1 / t_b) on the two fastest (serial part aside); the last columns are how close they come, "
+      f"the median of the seeds' ratios and its range ({len(next(iter(runs.values()), {}))} seeds).\n")
     w("| algorithm | iterations | " + " | ".join(f"CPU {c} s" for c in cpus) +
-      " | best for two s | two threads s | best / two threads |")
-    w("|---|---:|" + "---:|" * (len(cpus) + 3))
-    for config, times in by_config.items():
-        if config not in two or len(times) != len(cpus):
+      " | two threads s | best / two threads | min | max |")
+    w("|---|---:|" + "---:|" * (len(cpus) + 4))
+    for config, seeds in runs.items():
+        ratios = []
+        for times in seeds.values():
+            if "any" in times and all(c in times for c in cpus):
+                best = 1.0 / sum(1.0 / t for t in sorted(times[c] for c in cpus)[:2])
+                ratios.append(best / times["any"])
+        if not ratios:
             continue
-        best = 1.0 / sum(1.0 / t for t in sorted(times.values())[:2])
-        w(f"| {config[0]} | {config[1]} | " + " | ".join(f"{times[c]:.3f}" for c in cpus) +
-          f" | {best:.3f} | {two[config]:.3f} | {best / two[config]:.2f} |")
+        med = {c: statistics.median(t[c] for t in seeds.values() if c in t) for c in cpus + ["any"]}
+        w(f"| {config[0]} | {config[1]} | " + " | ".join(f"{med[c]:.3f}" for c in cpus) +
+          f" | {med['any']:.3f} | {statistics.median(ratios):.2f} | {min(ratios):.2f} | {max(ratios):.2f} |")
     w("")
 
 
@@ -147,7 +153,7 @@ def main():
         w("")
         cpus_path = os.path.join(d, "speedup-cpus.csv")
         if name == "speedup-summary.csv" and os.path.exists(cpus_path):
-            speedup_against_cpus(w, rows(path), rows(cpus_path))
+            speedup_against_cpus(w, rows(cpus_path))
     if os.path.exists(os.path.join(d, "plots-speedup", "speedup.svg")):
         w("![speedup](bench/plots-speedup/speedup.svg)\n")
 

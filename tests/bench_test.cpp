@@ -87,6 +87,26 @@ TEST(bench_test, grid_rows_summary_and_charts) {
   }
 }
 
+TEST(bench_test, first_seed_runs_the_same_runs_as_those_seeds_of_a_longer_grid) {
+  testutil::TempDir t;
+  const std::string d198 = shell_quote(testutil::data("tsplib/d198.tsp"));
+  auto all = testutil::run(acobench() + " --instances " + d198 + " --iterations 3 --threads 1 --seeds 3 --out " +
+                           shell_quote(t / "all.csv"));
+  ASSERT_EQ(all.code, 0) << all.err;
+  auto part = testutil::run(acobench() + " --instances " + d198 + " --iterations 3 --threads 1 --first-seed 2 --seeds 2 --out " +
+                            shell_quote(t / "part.csv"));
+  ASSERT_EQ(part.code, 0) << part.err;
+  auto a = csv(slurp(t / "all.csv")), p = csv(slurp(t / "part.csv"));
+  ASSERT_EQ(a.size(), 4u);
+  ASSERT_EQ(p.size(), 3u);
+  const int seed = column(a[0], "seed"), length = column(a[0], "length");
+  for (std::size_t i = 1; i < p.size(); ++i) {
+    EXPECT_EQ(p[i][seed], std::to_string(i + 1));
+    EXPECT_EQ(p[i][length], a[i + 1][length]) << "seed " << p[i][seed];
+  }
+  EXPECT_NE(a[1][length], a[2][length]) << "seeds that give the same route would not tell the seeds apart";
+}
+
 TEST(bench_test, thesis_preset_prints_tables_4_1_to_4_15_beside_the_published_times) {
   testutil::TempDir t;
   // As the contract writes it: no --out needed with a preset.

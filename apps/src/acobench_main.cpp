@@ -45,7 +45,7 @@ int main(int argc, char** argv) {
   std::vector<std::string> instances, algorithms{"focused"}, local_search{"3opt"};
   std::vector<double> alphas{1.0}, betas{-1.0}, rhos{-1.0}, time_limits{0.0};
   std::vector<int> ants{0}, iterations{0}, threads;
-  int seeds = 1;
+  int seeds = 1, first_seed = 1;
   std::string out, summary, plots, preset, tables;
   bool quick = false;
   double budget = 0;
@@ -60,6 +60,9 @@ int main(int argc, char** argv) {
   cli.add_option("--time-limit", time_limits, "Time limits per run in seconds (0 = none)")->delimiter(',');
   cli.add_option("--local-search", local_search, "none, 2opt, 2opt+oropt, 3opt (default: 2-opt, Or-opt and 3-opt with deeper Lin-Kernighan steps)")->delimiter(',');
   cli.add_option("--seeds", seeds, "Runs per cell, seeds 1..N (default 1)")->check(CLI::Range(1, 100000));
+  cli.add_option("--first-seed", first_seed,
+                 "Seeds K..K+N-1 instead of 1..N: one seed at a time, between other runs")
+      ->check(CLI::Range(1, 100000));
   cli.add_option("--out", out, "runs.csv: one row per run (required for a grid; optional with --preset)");
   cli.add_option("--summary", summary, "summary.csv: one row per cell");
   cli.add_option("--plots", plots, "Directory for SVG charts (speedup, convergence, gap against time)");
@@ -144,7 +147,7 @@ int main(int argc, char** argv) {
                         // Seeds outside threads: runs of one seed on 1, 2, ... threads
                         // follow each other, so a speedup compares runs made under the
                         // same conditions on a machine whose speed drifts.
-                        for (int s = 1; s <= seeds; ++s)
+                        for (int s = first_seed; s < first_seed + seeds; ++s)
                           for (int t : threads) {
                             app::BenchCell c;
                             c.instance = path;
