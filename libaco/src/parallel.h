@@ -10,9 +10,9 @@
 // before it sleeps. On a busy workstation a spinning worker burns the time
 // slice its partner needs, and two threads ran 3x slower than one (measured,
 // pcb1173, two busy processes beside; see the commit). Here a waiter spins
-// only about as long as a round's serial part lasts, then sleeps and gives
-// the core away. Slots are handed out one at a time, so a worker the kernel
-// has put aside holds up at most the slot it is in.
+// for a fraction of a round (Signal), then sleeps and gives the core away.
+// Slots are handed out one at a time, so a worker the kernel has put aside
+// holds up at most the slot it is in.
 //
 // Exceptions may not leave an OpenMP region: the first one (by slot, for
 // determinism) is kept and rethrown once the team has stopped.
@@ -27,8 +27,14 @@
 
 namespace aco::detail {
 
-// Something a thread waits for: spin a little (a round's serial part is tens
-// of microseconds, and waking a sleeper costs about as much), then sleep.
+// Something a thread waits for: spin a while, then sleep. A round's serial
+// part is tens of microseconds, but a worker also waits for its partner's
+// last ant, and on pcb1173 a quarter of those waits passed 100 us: each such
+// sleeper cost tens of microseconds more to wake, on this VM's CPUs. With
+// 300 us, 1 round in 20 sleeps, and two threads came to 0.914 of what the
+// two CPUs allow (focused, 2000 iterations, median of 7 seeds) against 0.882
+// with 100 us; with two busy processes beside, 1.23-1.37x one thread
+// against 1.26-1.39x.
 class Signal {
  public:
   // Tells the core this is a spin-wait: it lets the writer's cache line go sooner.
@@ -62,7 +68,7 @@ class Signal {
   }
 
  private:
-  static constexpr std::chrono::microseconds kSpin{100};
+  static constexpr std::chrono::microseconds kSpin{300};
   std::atomic<int> sleepers_{0};
   std::mutex mutex_;
   std::condition_variable woken_;
