@@ -223,6 +223,21 @@ TEST(local_search_test, the_ascent_keeps_rows_valid_and_changes_them) {
   EXPECT_GT(differ, space.holes() / 50);
 }
 
+TEST(local_search_test, candidate_rows_are_the_same_on_any_thread_count) {
+  for (const bool clustered : {false, true}) {
+    const aco::Problem p = random_problem(3000, 11, aco::Shape::ClosedTour, clustered);
+    const aco::detail::Space space(p);
+    const aco::detail::Candidates nearest = aco::detail::joined_nearest(space, 16, 1);
+    const aco::detail::Candidates alpha = aco::detail::alpha_candidates(space, nearest, 5, 30, 1);
+    for (const int threads : {2, 3}) {
+      const aco::detail::Candidates nearest_t = aco::detail::joined_nearest(space, 16, threads);
+      EXPECT_EQ(nearest_t.list, nearest.list) << threads << " threads, clustered " << clustered;
+      EXPECT_EQ(aco::detail::alpha_candidates(space, nearest_t, 5, 30, threads).list, alpha.list)
+          << threads << " threads, clustered " << clustered;
+    }
+  }
+}
+
 // Which quadrant around `from` a point is in, as bucket_grid.h counts them.
 int quadrant_of(aco::Point2 from, aco::Point2 p) {
   const double dx = p.x - from.x, dy = p.y - from.y;

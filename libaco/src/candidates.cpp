@@ -159,7 +159,7 @@ class SpanningForest {
 
 }  // namespace
 
-Candidates build_candidates(const Space& space, int k) {
+Candidates build_candidates(const Space& space, int k, int threads) {
   const HoleIndex n = space.holes();
   Candidates c;
   c.k = std::max(0, std::min<int>(k, static_cast<int>(n) - 1));
@@ -172,9 +172,13 @@ Candidates build_candidates(const Space& space, int k) {
   // resolved by our own sort (distance in the problem's metric, then index),
   // which keeps the lists identical on every machine and thread count.
   const std::size_t want = std::min<std::size_t>(n, static_cast<std::size_t>(c.k) + 1 + 4);
+  // Rows are independent: each worker fills its share with its own scratch.
+#pragma omp parallel num_threads(std::max(1, threads))
+  {
   std::vector<std::size_t> idx(want);
   std::vector<double> dist2(want);
   std::vector<std::pair<double, HoleIndex>> row;
+#pragma omp for schedule(static)
   for (HoleIndex i = 0; i < n; ++i) {
     const double q[2] = {space.point(i).x, space.point(i).y};
     std::size_t found = tree.knnSearch(q, want, idx.data(), dist2.data());
@@ -194,6 +198,7 @@ Candidates build_candidates(const Space& space, int k) {
     }
     HoleIndex* out = c.list.data() + static_cast<std::size_t>(i) * c.k;
     for (int r = 0; r < c.k; ++r) out[r] = row[r].second;
+  }
   }
   return c;
 }
@@ -226,8 +231,8 @@ Candidates with_quadrant_neighbours(const Space& space, Candidates nearest) {
   return nearest;
 }
 
-Candidates joined_nearest(const Space& space, int k) {
-  Candidates nearest = build_candidates(space, k);
+Candidates joined_nearest(const Space& space, int k, int threads) {
+  Candidates nearest = build_candidates(space, k, threads);
   const HoleIndex n = space.holes();
   std::vector<HoleIndex> root(n);
   std::iota(root.begin(), root.end(), 0);
@@ -261,7 +266,7 @@ std::vector<std::pair<HoleIndex, HoleIndex>> candidate_edges(const Candidates& c
   return edges;
 }
 
-Candidates alpha_candidates(const Space& space, const Candidates& nearest, int k, int ascent_iterations) {
+Candidates alpha_candidates(const Space& space, const Candidates& nearest, int k, int ascent_iterations, int threads) {
   const HoleIndex n = space.holes();
   Candidates out;
   out.k = std::min(k, nearest.k);
@@ -377,7 +382,10 @@ Candidates alpha_candidates(const Space& space, const Candidates& nearest, int k
     if (up[a] != up[b]) return -1.0;  // different trees
     return std::max({m, longest[a], longest[b]});
   };
+#pragma omp parallel num_threads(std::max(1, threads))
+  {
   std::vector<std::pair<double, int>> row;
+#pragma omp for schedule(static)
   for (HoleIndex i = 0; i < n; ++i) {
     const HoleIndex* nr = nearest.of(i);
     row.clear();
@@ -390,6 +398,7 @@ Candidates alpha_candidates(const Space& space, const Candidates& nearest, int k
     std::sort(row.begin(), row.begin() + out.k, [](auto x, auto y) { return x.second < y.second; });
     HoleIndex* o = out.list.data() + static_cast<std::size_t>(i) * out.k;
     for (int r = 0; r < out.k; ++r) o[r] = nr[row[r].second];
+  }
   }
   return out;
 }

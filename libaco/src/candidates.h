@@ -16,7 +16,9 @@ struct Candidates {
   const HoleIndex* of(HoleIndex i) const { return list.data() + static_cast<std::size_t>(i) * k; }
 };
 
-Candidates build_candidates(const Space& space, int k);
+// threads: how many workers fill the rows (each row alone, so any count gives
+// the same lists).
+Candidates build_candidates(const Space& space, int k, int threads = 1);
 
 // How far (in rings of the bucket grid, about 1.4 mean hole spacings each)
 // the quadrant search looks: far enough to join the clusters of fl1400 and
@@ -35,7 +37,7 @@ Candidates with_quadrant_neighbours(const Space& space, Candidates nearest);
 // they fall apart into several pieces (fl1400, d1655, brd14051): where they
 // are one piece, the quadrant neighbours changed the lists of pla7397 for the
 // worse (30 s, 3 seeds: 0.257 0.196 0.248 % with them, 0.154 0.202 0.159 % without).
-Candidates joined_nearest(const Space& space, int k);
+Candidates joined_nearest(const Space& space, int k, int threads = 1);
 
 // Every edge between a hole and one of its candidates, once, as (a, b) with
 // a < b, in that order: an edge in only one of its ends' lists counts too.
@@ -50,6 +52,7 @@ std::vector<std::pair<HoleIndex, HoleIndex>> candidate_edges(const Candidates& c
 // the nearer hole first; each row is then sorted by distance, which the local
 // search's pruning needs. Where the neighbour graph falls apart into several
 // trees, an edge between two of them has alpha 0. Memory O(n k + n log n).
-Candidates alpha_candidates(const Space& space, const Candidates& nearest, int k, int ascent_iterations);
+// The ascent is one thread's; `threads` workers fill the rows after it.
+Candidates alpha_candidates(const Space& space, const Candidates& nearest, int k, int ascent_iterations, int threads = 1);
 
 }  // namespace aco::detail

@@ -170,13 +170,14 @@ class Colony {
  public:
   Colony(const Problem& problem, const Params& params)
       : problem_(problem), p_(params), space_(problem), n_(space_.holes()) {
+    const int threads = p_.threads;
     if (n_ <= kFullListLimit) {
-      cand_ = detail::build_candidates(space_, static_cast<int>(n_) - 1);
+      cand_ = detail::build_candidates(space_, static_cast<int>(n_) - 1, threads);
     } else if (uses_alpha_lists(n_, p_.local_search)) {
-      cand_ = detail::alpha_candidates(space_, detail::joined_nearest(space_, kAlphaFrom), p_.candidates,
-                                       ascent_iterations(n_, p_.time_limit_s));
+      cand_ = detail::alpha_candidates(space_, detail::joined_nearest(space_, kAlphaFrom, threads), p_.candidates,
+                                       ascent_iterations(n_, p_.time_limit_s), threads);
     } else {
-      cand_ = detail::build_candidates(space_, p_.candidates);
+      cand_ = detail::build_candidates(space_, p_.candidates, threads);
     }
     k_ = cand_.k;
     const std::size_t slots = static_cast<std::size_t>(n_) * k_;
