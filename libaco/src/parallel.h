@@ -31,10 +31,10 @@ namespace aco::detail {
 // part is tens of microseconds, but a worker also waits for its partner's
 // last ant, and on pcb1173 a quarter of those waits passed 100 us: each such
 // sleeper cost tens of microseconds more to wake, on this VM's CPUs. With
-// 300 us, 1 round in 20 sleeps, and two threads came to 0.914 of what the
-// two CPUs allow (focused, 2000 iterations, median of 7 seeds) against 0.882
-// with 100 us; with two busy processes beside, 1.23-1.37x one thread
-// against 1.26-1.39x.
+// 300 us, 1 round in 20 sleeps, and two threads came to 0.909 of what the
+// two CPUs allow (focused, 2000 iterations, median of 7 seeds, run beside
+// the other build) against 0.901 with 100 us; with two busy processes
+// beside, 1.23-1.37x one thread against 1.26-1.39x.
 class Signal {
  public:
   // Tells the core this is a spin-wait: it lets the writer's cache line go sooner.
