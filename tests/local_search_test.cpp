@@ -223,18 +223,55 @@ TEST(local_search_test, the_ascent_keeps_rows_valid_and_changes_them) {
   EXPECT_GT(differ, space.holes() / 50);
 }
 
+// Holes on a lattice, which makes many lengths equal, and a pile of holes on
+// one spot, whose nearest are all each other: a neighbour graph of several
+// pieces, with ties everywhere.
+aco::Problem lattice_with_pile() {
+  aco::Problem p;
+  p.shape = aco::Shape::ClosedTour;
+  for (int x = 0; x < 50; ++x) {
+    for (int y = 0; y < 30; ++y) p.points.push_back({10.0 * x, 10.0 * y});
+  }
+  for (int i = 0; i < 40; ++i) p.points.push_back({1000.0, 1000.0});
+  return p;
+}
+
 TEST(local_search_test, candidate_rows_are_the_same_on_any_thread_count) {
-  for (const bool clustered : {false, true}) {
-    const aco::Problem p = random_problem(3000, 11, aco::Shape::ClosedTour, clustered);
+  // On several threads each step's tree is grown in parts and joined (one
+  // strip of holes a thread): the same tree, so the same rows.
+  for (const int layout : {0, 1, 2}) {
+    const aco::Problem p = layout == 2 ? lattice_with_pile() : random_problem(3000, 11, aco::Shape::ClosedTour, layout == 1);
     const aco::detail::Space space(p);
-    const aco::detail::Candidates nearest = aco::detail::joined_nearest(space, 16, 1);
-    const aco::detail::Candidates alpha = aco::detail::alpha_candidates(space, nearest, 5, 30, 1);
-    for (const int threads : {2, 3}) {
-      const aco::detail::Candidates nearest_t = aco::detail::joined_nearest(space, 16, threads);
-      EXPECT_EQ(nearest_t.list, nearest.list) << threads << " threads, clustered " << clustered;
-      EXPECT_EQ(aco::detail::alpha_candidates(space, nearest_t, 5, 30, threads).list, alpha.list)
-          << threads << " threads, clustered " << clustered;
+    // The 16 nearest of clustered holes alone are a forest, without the ascent.
+    for (const bool joined : {true, false}) {
+      auto neighbours = [&](int threads) {
+        return joined ? aco::detail::joined_nearest(space, 16, threads) : aco::detail::build_candidates(space, 16, threads);
+      };
+      const aco::detail::Candidates nearest = neighbours(1);
+      const aco::detail::Candidates alpha = aco::detail::alpha_candidates(space, nearest, 5, 30, 1);
+      for (const int threads : {2, 3}) {
+        SCOPED_TRACE(::testing::Message() << threads << " threads, layout " << layout << ", joined " << joined);
+        const aco::detail::Candidates nearest_t = neighbours(threads);
+        EXPECT_EQ(nearest_t.list, nearest.list);
+        EXPECT_EQ(aco::detail::alpha_candidates(space, nearest_t, 5, 30, threads).list, alpha.list);
+      }
     }
+  }
+}
+
+TEST(local_search_test, candidate_edges_are_each_row_edge_once_in_order) {
+  for (const int layout : {0, 1, 2}) {
+    const aco::Problem p = layout == 2 ? lattice_with_pile() : random_problem(700, 3, aco::Shape::ClosedTour, layout == 1);
+    const aco::detail::Space space(p);
+    const HoleIndex n = space.holes();
+    const aco::detail::Candidates c = aco::detail::build_candidates(space, 9);
+    std::vector<std::pair<HoleIndex, HoleIndex>> expected;
+    for (HoleIndex i = 0; i < n; ++i) {
+      for (int r = 0; r < c.k; ++r) expected.emplace_back(std::min(i, c.of(i)[r]), std::max(i, c.of(i)[r]));
+    }
+    std::sort(expected.begin(), expected.end());
+    expected.erase(std::unique(expected.begin(), expected.end()), expected.end());
+    EXPECT_EQ(aco::detail::candidate_edges(c, n), expected) << "layout " << layout;
   }
 }
 

@@ -35,6 +35,13 @@ using Tree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<do
 // each edge from its two ends and keeps only the frontier in its heap, where a better
 // offer moves a hole up instead of adding a second entry (a heap of every
 // offer was as slow as the sort).
+//
+// On several threads the holes are split into parts (split()): each part's
+// forest is grown by Prim over the edges inside it, at once, and Kruskal joins
+// the parts' forests with the edges between parts. An edge inside a part that
+// its part's forest leaves out is the longest of a cycle of that part's
+// edges, so no spanning forest of the whole holds it either: the join finds
+// the same forest as Prim over the whole graph.
 class SpanningForest {
  public:
   struct Edge {
@@ -44,7 +51,7 @@ class SpanningForest {
   };
   SpanningForest(std::vector<Edge> edges, HoleIndex holes)
       : edges_(std::move(edges)), n_(holes), first_arc_(static_cast<std::size_t>(holes) + 1, 0),
-        offer_cost_(holes), offer_edge_(holes), heap_at_(holes, kOutside) {
+        in_tree_((edges_.size() + 63) / 64, 0), parts_(1) {
     for (const Edge& e : edges_) {
       ++first_arc_[e.a + 1];
       ++first_arc_[e.b + 1];
@@ -56,30 +63,60 @@ class SpanningForest {
       arcs_[fill[edges_[e].a]++] = {edges_[e].b, e, edges_[e].length};
       arcs_[fill[edges_[e].b]++] = {edges_[e].a, e, edges_[e].length};
     }
+    arc_end_.assign(first_arc_.begin() + 1, first_arc_.end());
+    parts_[0].holes.resize(n_);
+    std::iota(parts_[0].holes.begin(), parts_[0].holes.end(), HoleIndex{0});
+    parts_[0].reserve(n_);
   }
   const std::vector<Edge>& edges() const { return edges_; }
-  // The forest's edges, in the order Prim took them: sums over them differ
-  // from Kruskal's sorted order only in rounding (the same routes on all 11
-  // instances of bench/tsplib, 30 or 5 iterations, seed 1, as with Kruskal).
+  // The forest's edges, by edge index.
   const std::vector<std::uint32_t>& tree() const { return tree_; }
 
-  // Grows the forest under `pi` and returns its cost, summed in tree() order;
-  // the tree's edges' `cost` is then up to date.
-  double grow(const std::vector<double>& pi) {
-    std::fill(offer_cost_.begin(), offer_cost_.end(), std::numeric_limits<double>::infinity());
-    tree_.clear();
-    for (HoleIndex root = 0; root < n_; ++root) {
-      if (offer_cost_[root] == kSpanned) continue;
-      span(root, pi);
-      while (!heap_.empty()) {
-        const HoleIndex h = pop();
-        tree_.push_back(offer_edge_[h]);
-        span(h, pi);
-      }
+  // From now on grow() grows the forest of each part (part_of[h] < parts) on
+  // a thread of its own and joins them.
+  void split(const std::vector<std::uint32_t>& part_of, std::uint32_t parts) {
+    parts_.assign(parts, {});
+    for (HoleIndex h = 0; h < n_; ++h) parts_[part_of[h]].holes.push_back(h);
+    for (Part& part : parts_) part.reserve(n_);
+    // Each hole's arcs inside its part first, and its part's Prim reads only
+    // those. (Which forest Prim grows, and in what order, does not depend on
+    // the order it reads a hole's arcs in: an offer is the least of them.)
+    for (HoleIndex h = 0; h < n_; ++h) {
+      Arc* const first = arcs_.data() + first_arc_[h];
+      Arc* const last = arcs_.data() + first_arc_[h + 1];
+      const Arc* inner_end =
+          std::partition(first, last, [&](const Arc& arc) { return part_of[arc.to] == part_of[h]; });
+      arc_end_[h] = static_cast<std::uint32_t>(inner_end - arcs_.data());
     }
-    for (std::uint32_t e : tree_) edges_[e].cost = cost(e, pi);
+    // The edges between parts, priced and sorted by the parts in turn.
+    std::uint32_t turn = 0;
+    for (std::uint32_t e = 0; e < edges_.size(); ++e) {
+      if (part_of[edges_[e].a] != part_of[edges_[e].b]) parts_[turn++ % parts].between.push_back({0.0, e});
+    }
+    root_.resize(n_);
+  }
+
+  // Grows the forest under `pi` and returns its cost, summed by edge index
+  // (so the same bits however it was grown); the tree's edges' `cost` is then
+  // up to date.
+  double grow(const std::vector<double>& pi) {
+    if (parts_.size() == 1) {
+      parts_[0].grow(*this, pi);
+      for (auto [c, e] : parts_[0].grown) mark(e);
+    } else {
+      grow_parts(pi);
+    }
+    tree_.clear();
     double total = 0.0;
-    for (std::uint32_t e : tree_) total += edges_[e].cost;
+    for (std::size_t word = 0; word < in_tree_.size(); ++word) {
+      for (std::uint64_t bits = in_tree_[word]; bits != 0; bits &= bits - 1) {
+        const auto e = static_cast<std::uint32_t>(64 * word + static_cast<std::size_t>(__builtin_ctzll(bits)));
+        tree_.push_back(e);
+        edges_[e].cost = cost(e, pi);
+        total += edges_[e].cost;
+      }
+      in_tree_[word] = 0;
+    }
     return total;
   }
 
@@ -92,69 +129,144 @@ class SpanningForest {
     std::uint32_t edge;
     double length;
   };
+  // An edge priced: (cost, index), the order Kruskal and Prim take edges in.
+  using Priced = std::pair<double, std::uint32_t>;
+  void mark(std::uint32_t e) { in_tree_[e / 64] |= std::uint64_t{1} << (e % 64); }
   // Summed as (length + pi[a]) + pi[b], a < b, whichever end is reached first:
   // the same bits from either side.
   double cost(std::uint32_t e, const std::vector<double>& pi) const {
     return edges_[e].length + pi[edges_[e].a] + pi[edges_[e].b];
   }
-  bool better(HoleIndex x, HoleIndex y) const {
-    return offer_cost_[x] < offer_cost_[y] || (offer_cost_[x] == offer_cost_[y] && offer_edge_[x] < offer_edge_[y]);
-  }
-  void place(std::size_t i, HoleIndex h) {
-    heap_[i] = h;
-    heap_at_[h] = static_cast<std::uint32_t>(i);
-  }
-  void span(HoleIndex h, const std::vector<double>& pi) {
-    offer_cost_[h] = kSpanned;
-    const double* p = pi.data();
-    const Arc* arc = arcs_.data() + first_arc_[h];
-    const Arc* end = arcs_.data() + first_arc_[h + 1];
-    for (; arc != end; ++arc) {
-      const HoleIndex to = arc->to;
-      // cost(arc->edge, pi), read from the arc: the same sum, in the same order.
-      const double c = arc->length + p[std::min(h, to)] + p[std::max(h, to)];
-      if (!(c < offer_cost_[to] || (c == offer_cost_[to] && arc->edge < offer_edge_[to]))) continue;
-      offer_cost_[to] = c;
-      offer_edge_[to] = arc->edge;
-      if (heap_at_[to] == kOutside) {
-        heap_.push_back(to);
-        heap_at_[to] = static_cast<std::uint32_t>(heap_.size() - 1);
+
+  // One thread's Prim over the holes of a part. Its own arrays, indexed by
+  // hole (half of them unused with two parts), so two threads never write
+  // the same cache line.
+  struct Part {
+    std::vector<HoleIndex> holes;
+    // For each hole not yet spanned: its best offer (cost, edge), and its place in heap.
+    std::vector<double> offer_cost;
+    std::vector<std::uint32_t> offer_edge, heap_at;
+    std::vector<HoleIndex> heap;  // the holes offered an edge, a binary heap by better()
+    std::vector<Priced> grown;    // the forest's edges, as taken
+    std::vector<Priced> between;  // its share of the edges between parts
+
+    void reserve(HoleIndex n) {
+      offer_cost.assign(n, 0.0);
+      offer_edge.assign(n, 0);
+      heap_at.assign(n, kOutside);
+    }
+    void grow(const SpanningForest& f, const std::vector<double>& pi) {
+      for (HoleIndex h : holes) offer_cost[h] = std::numeric_limits<double>::infinity();
+      grown.clear();
+      for (HoleIndex root : holes) {
+        if (offer_cost[root] == kSpanned) continue;
+        span(f, root, pi);
+        while (!heap.empty()) {
+          const HoleIndex h = pop();
+          grown.push_back({offer_cost[h], offer_edge[h]});
+          span(f, h, pi);
+        }
       }
-      sift_up(heap_at_[to]);
     }
-  }
-  void sift_up(std::size_t i) {
-    const HoleIndex h = heap_[i];
-    for (; i > 0 && better(h, heap_[(i - 1) / 2]); i = (i - 1) / 2) place(i, heap_[(i - 1) / 2]);
-    place(i, h);
-  }
-  HoleIndex pop() {
-    const HoleIndex top = heap_[0], h = heap_.back();
-    heap_.pop_back();
-    heap_at_[top] = kOutside;
-    if (heap_.empty()) return top;
-    std::size_t i = 0;
-    for (;;) {
-      std::size_t c = 2 * i + 1;
-      if (c >= heap_.size()) break;
-      if (c + 1 < heap_.size() && better(heap_[c + 1], heap_[c])) ++c;
-      if (!better(heap_[c], h)) break;
-      place(i, heap_[c]);
-      i = c;
+    bool better(HoleIndex x, HoleIndex y) const {
+      return offer_cost[x] < offer_cost[y] || (offer_cost[x] == offer_cost[y] && offer_edge[x] < offer_edge[y]);
     }
-    place(i, h);
-    return top;
+    void place(std::size_t i, HoleIndex h) {
+      heap[i] = h;
+      heap_at[h] = static_cast<std::uint32_t>(i);
+    }
+    // Over h's arcs up to arc_end_: all of them, or those inside its part.
+    void span(const SpanningForest& f, HoleIndex h, const std::vector<double>& pi) {
+      offer_cost[h] = kSpanned;
+      const double* p = pi.data();
+      const Arc* arc = f.arcs_.data() + f.first_arc_[h];
+      const Arc* end = f.arcs_.data() + f.arc_end_[h];
+      for (; arc != end; ++arc) {
+        const HoleIndex to = arc->to;
+        // cost(arc->edge, pi), read from the arc: the same sum, in the same order.
+        const double c = arc->length + p[std::min(h, to)] + p[std::max(h, to)];
+        if (!(c < offer_cost[to] || (c == offer_cost[to] && arc->edge < offer_edge[to]))) continue;
+        offer_cost[to] = c;
+        offer_edge[to] = arc->edge;
+        if (heap_at[to] == kOutside) {
+          heap.push_back(to);
+          heap_at[to] = static_cast<std::uint32_t>(heap.size() - 1);
+        }
+        sift_up(heap_at[to]);
+      }
+    }
+    void sift_up(std::size_t i) {
+      const HoleIndex h = heap[i];
+      for (; i > 0 && better(h, heap[(i - 1) / 2]); i = (i - 1) / 2) place(i, heap[(i - 1) / 2]);
+      place(i, h);
+    }
+    HoleIndex pop() {
+      const HoleIndex top = heap[0], h = heap.back();
+      heap.pop_back();
+      heap_at[top] = kOutside;
+      if (heap.empty()) return top;
+      std::size_t i = 0;
+      for (;;) {
+        std::size_t c = 2 * i + 1;
+        if (c >= heap.size()) break;
+        if (c + 1 < heap.size() && better(heap[c + 1], heap[c])) ++c;
+        if (!better(heap[c], h)) break;
+        place(i, heap[c]);
+        i = c;
+      }
+      place(i, h);
+      return top;
+    }
+  };
+
+  void grow_parts(const std::vector<double>& pi) {
+    const auto parts = static_cast<std::uint32_t>(parts_.size());
+    // Each part grows its forest and sorts it, and prices and sorts its share
+    // of the edges between parts.
+#pragma omp parallel for schedule(static, 1) num_threads(parts)
+    for (std::uint32_t task = 0; task < parts; ++task) {
+      Part& part = parts_[task];
+      part.grow(*this, pi);
+      std::sort(part.grown.begin(), part.grown.end());
+      for (Priced& edge : part.between) edge.first = cost(edge.second, pi);
+      std::sort(part.between.begin(), part.between.end());
+    }
+    // Kruskal over the parts' forests and the edges between parts, merged in order.
+    std::iota(root_.begin(), root_.end(), HoleIndex{0});
+    auto find = [this](HoleIndex x) {
+      while (root_[x] != x) x = root_[x] = root_[root_[x]];
+      return x;
+    };
+    const std::uint32_t lists = 2 * parts;
+    std::vector<const Priced*> next(lists), end(lists);
+    for (std::uint32_t l = 0; l < lists; ++l) {
+      const std::vector<Priced>& list = l < parts ? parts_[l].grown : parts_[l - parts].between;
+      next[l] = list.data();
+      end[l] = list.data() + list.size();
+    }
+    for (HoleIndex joined = 0; joined + 1 < n_;) {
+      std::uint32_t pick = lists;
+      for (std::uint32_t l = 0; l < lists; ++l) {
+        if (next[l] != end[l] && (pick == lists || *next[l] < *next[pick])) pick = l;
+      }
+      if (pick == lists) break;  // a forest: every edge looked at
+      const std::uint32_t e = (next[pick]++)->second;
+      const HoleIndex ra = find(edges_[e].a), rb = find(edges_[e].b);
+      if (ra == rb) continue;
+      root_[ra] = rb;
+      mark(e);
+      ++joined;
+    }
   }
 
   std::vector<Edge> edges_;
   HoleIndex n_;
-  std::vector<std::uint32_t> first_arc_;
+  std::vector<std::uint32_t> first_arc_, arc_end_;
   std::vector<Arc> arcs_;
-  // For each hole not yet spanned: its best offer (cost, edge), and its place in heap_.
-  std::vector<double> offer_cost_;
-  std::vector<std::uint32_t> offer_edge_, heap_at_;
-  std::vector<HoleIndex> heap_;  // the holes offered an edge, a binary heap by better()
+  std::vector<std::uint64_t> in_tree_;  // a bit by edge, between growing and summing
   std::vector<std::uint32_t> tree_;
+  std::vector<Part> parts_;  // one unless split()
+  std::vector<HoleIndex> root_;  // after split(): Kruskal's union-find
 };
 
 }  // namespace
@@ -255,14 +367,32 @@ Candidates joined_nearest(const Space& space, int k, int threads) {
 }
 
 std::vector<std::pair<HoleIndex, HoleIndex>> candidate_edges(const Candidates& candidates, HoleIndex holes) {
-  std::vector<std::pair<HoleIndex, HoleIndex>> edges;
-  edges.reserve(static_cast<std::size_t>(holes) * candidates.k);
+  // Each edge's larger end, bucketed by its smaller end (a counting sort);
+  // each bucket then sorted and without repeats. The same list as sorting all
+  // n k pairs, at O(n k log k): the sort was 3 ms of pcb1173's 36 ms start.
+  std::vector<std::uint32_t> first(static_cast<std::size_t>(holes) + 1, 0);
   for (HoleIndex i = 0; i < holes; ++i) {
-    const HoleIndex* row = candidates.of(i);
-    for (int r = 0; r < candidates.k; ++r) edges.emplace_back(std::min(i, row[r]), std::max(i, row[r]));
+    for (int r = 0; r < candidates.k; ++r) ++first[std::min(i, candidates.of(i)[r]) + 1];
   }
-  std::sort(edges.begin(), edges.end());
-  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  for (HoleIndex i = 0; i < holes; ++i) first[i + 1] += first[i];
+  std::vector<HoleIndex> larger(first[holes]);
+  std::vector<std::uint32_t> fill(first.begin(), first.end() - 1);
+  for (HoleIndex i = 0; i < holes; ++i) {
+    for (int r = 0; r < candidates.k; ++r) {
+      const HoleIndex j = candidates.of(i)[r];
+      larger[fill[std::min(i, j)]++] = std::max(i, j);
+    }
+  }
+  std::vector<std::pair<HoleIndex, HoleIndex>> edges;
+  edges.reserve(larger.size());
+  for (HoleIndex a = 0; a < holes; ++a) {
+    HoleIndex* const from = larger.data() + first[a];
+    HoleIndex* const to = larger.data() + first[a + 1];
+    std::sort(from, to);
+    for (HoleIndex* b = from; b != to; ++b) {
+      if (b == from || *b != b[-1]) edges.emplace_back(a, *b);
+    }
+  }
   return edges;
 }
 
@@ -274,8 +404,32 @@ Candidates alpha_candidates(const Space& space, const Candidates& nearest, int k
   if (out.k == 0) return out;
   // The neighbour graph, each edge once.
   std::vector<SpanningForest::Edge> graph;
-  for (auto [a, b] : candidate_edges(nearest, n)) graph.push_back({a, b, space.d(a, b)});
+  const std::vector<std::pair<HoleIndex, HoleIndex>> pairs = candidate_edges(nearest, n);
+  graph.reserve(pairs.size());  // fresh pages cost on a VM: growing it step by step was 2 of pcb1173's 36 ms
+  for (auto [a, b] : pairs) graph.push_back({a, b, space.d(a, b)});
   SpanningForest forest(std::move(graph), n);
+  if (threads > 1) {
+    // As many parts as threads: strips across the longer side of the holes'
+    // bounding box, each of as many holes, so that few edges run between parts.
+    double x0 = std::numeric_limits<double>::infinity(), x1 = -x0, y0 = x0, y1 = -x0;
+    for (HoleIndex h = 0; h < n; ++h) {
+      x0 = std::min(x0, space.point(h).x), x1 = std::max(x1, space.point(h).x);
+      y0 = std::min(y0, space.point(h).y), y1 = std::max(y1, space.point(h).y);
+    }
+    const bool across_x = x1 - x0 >= y1 - y0;
+    auto along = [&](HoleIndex h) { return across_x ? space.point(h).x : space.point(h).y; };
+    std::vector<HoleIndex> by_position(n);
+    std::iota(by_position.begin(), by_position.end(), HoleIndex{0});
+    std::sort(by_position.begin(), by_position.end(), [&](HoleIndex a, HoleIndex b) {
+      return along(a) < along(b) || (along(a) == along(b) && a < b);
+    });
+    const auto parts = static_cast<std::uint32_t>(std::min<HoleIndex>(static_cast<HoleIndex>(threads), n));
+    std::vector<std::uint32_t> part_of(n);
+    for (HoleIndex r = 0; r < n; ++r) {
+      part_of[by_position[r]] = static_cast<std::uint32_t>(static_cast<std::uint64_t>(r) * parts / n);
+    }
+    forest.split(part_of, parts);
+  }
   const auto& edges = forest.edges();
   const auto& in_tree = forest.tree();
   // Subgradient ascent (Held & Karp 1970, as LKH runs it): raise pi on holes

@@ -52,7 +52,8 @@ std::vector<std::pair<HoleIndex, HoleIndex>> candidate_edges(const Candidates& c
 // the nearer hole first; each row is then sorted by distance, which the local
 // search's pruning needs. Where the neighbour graph falls apart into several
 // trees, an edge between two of them has alpha 0. Memory O(n k + n log n).
-// The ascent is one thread's; `threads` workers fill the rows after it.
+// `threads` workers grow each step's tree (one part of the holes each, then
+// joined) and fill the rows; any count gives the same lists.
 Candidates alpha_candidates(const Space& space, const Candidates& nearest, int k, int ascent_iterations, int threads = 1);
 
 }  // namespace aco::detail
