@@ -1,9 +1,9 @@
 #pragma once
 // The one parallel scaffold of the colony: a team of OpenMP workers that stays
-// up for the whole run. Each round every worker takes slots [0, count) one at
+// up for the whole run. Each round the workers take slots [0, count) one at
 // a time (body(k, worker) writes only slot k and worker's own scratch); the
-// worker that finishes last then runs between(), the barrier-synced part,
-// which says whether to go on.
+// worker that finishes the round's last slot then runs between(), the
+// barrier-synced part, which says whether to go on.
 //
 // Why not `omp parallel for` per round: a focused round lasts a few hundred
 // microseconds, and libgomp's barrier spins for up to a few milliseconds
@@ -11,8 +11,9 @@
 // slice its partner needs, and two threads ran 3x slower than one (measured,
 // pcb1173, two busy processes beside; see the commit). Here a waiter spins
 // for a fraction of a round (Signal), then sleeps and gives the core away.
-// Slots are handed out one at a time, so a worker the kernel has put aside
-// holds up at most the slot it is in.
+// Slots are handed out one at a time, and a round ends when its slots are
+// done, not when every worker has looked in: a worker the kernel has put
+// aside holds up at most the slot it is in.
 //
 // Exceptions may not leave an OpenMP region: the first one (by slot, for
 // determinism) is kept and rethrown once the team has stopped.
@@ -105,39 +106,40 @@ void parallel_rounds(int count, int threads, std::vector<double>& busy_s, Body&&
     }
   };
 
-  if (threads <= 1) {
+  if (threads <= 1 || count <= 0) {
     double busy = 0.0;
     do {
       for (int k = 0; k < count; ++k) run_slot(k, 0, busy);
     } while (go_on());
     busy_s[0] += busy;
   } else {
-    std::atomic<int> next_slot{0};
-    std::atomic<int> finished{0};       // workers done with this round's slots
+    std::atomic<int> next_slot{0};  // the next slot of the round to hand out
+    std::atomic<int> done{0};       // the round's slots finished
     std::atomic<unsigned> round{0};
     std::atomic<bool> stop{false};
     Signal next_round;
 #pragma omp parallel num_threads(threads)
     {
       const int me = omp_get_thread_num();
-      const int team = omp_get_num_threads();  // fewer than asked if the runtime says so
       double busy = 0.0;
-      for (unsigned my_round = 0;; ++my_round) {
-        for (int k = next_slot.fetch_add(1); k < count; k = next_slot.fetch_add(1)) run_slot(k, me, busy);
-        if (finished.fetch_add(1) + 1 == team) {
-          // The last worker to finish the round's slots runs the serial part
-          // itself: no hand-over, and no worker waits for a partner to wake.
+      while (!stop.load()) {
+        const unsigned seen = round.load();
+        for (int k = next_slot.fetch_add(1); k < count; k = next_slot.fetch_add(1)) {
+          run_slot(k, me, busy);
+          if (done.fetch_add(1) + 1 < count) continue;
+          // Whoever finishes the round's last slot runs the serial part
+          // itself, and then hands out the next round's slots. A worker that
+          // has taken no slot of a round is not waited for: one the kernel
+          // has put aside, or that sleeps, joins when it wakes.
           const bool more = go_on();
-          next_slot.store(0);
-          finished.store(0);
+          done.store(0);
           stop.store(!more);
-          round.store(my_round + 1);
+          if (more) next_slot.store(0);
+          round.fetch_add(1);  // not seen + 1: this worker may have gone on into later rounds
           next_round.notify();
-          if (!more) break;
-        } else {
-          next_round.wait_until([&] { return round.load() != my_round; });
-          if (stop.load()) break;
         }
+        // Also on stop: the last round may have ended between reading stop and round.
+        next_round.wait_until([&] { return round.load() != seen || stop.load(); });
       }
       busy_s[static_cast<std::size_t>(me)] += busy;
     }
