@@ -1,6 +1,7 @@
 #include "candidates.h"
 
 #include "bucket_grid.h"
+#include "parallel.h"
 
 #include <algorithm>
 #include <cmath>
@@ -26,6 +27,10 @@ struct PointCloud {
 
 using Tree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, PointCloud>, PointCloud, 2,
                                                  std::size_t>;
+
+// A spanning forest's parts each keep arrays over all holes, so there are at
+// most this many (memory O(n k) whatever --threads says).
+constexpr int kMaxParts = 8;
 
 // The minimum spanning forest of a fixed graph under costs
 // length(a, b) + pi[a] + pi[b] that change at every step of the ascent, with
@@ -66,18 +71,17 @@ class SpanningForest {
     arc_end_.assign(first_arc_.begin() + 1, first_arc_.end());
     parts_[0].holes.resize(n_);
     std::iota(parts_[0].holes.begin(), parts_[0].holes.end(), HoleIndex{0});
-    parts_[0].reserve(n_);
+    parts_[0].size_arrays(n_);
   }
   const std::vector<Edge>& edges() const { return edges_; }
   // The forest's edges, by edge index.
   const std::vector<std::uint32_t>& tree() const { return tree_; }
 
-  // From now on grow() grows the forest of each part (part_of[h] < parts) on
-  // a thread of its own and joins them.
+  // From now on the holes are grown in parts (part_of[h] < parts): see grow_part().
   void split(const std::vector<std::uint32_t>& part_of, std::uint32_t parts) {
     parts_.assign(parts, {});
     for (HoleIndex h = 0; h < n_; ++h) parts_[part_of[h]].holes.push_back(h);
-    for (Part& part : parts_) part.reserve(n_);
+    for (Part& part : parts_) part.size_arrays(n_);
     // Each hole's arcs inside its part first, and its part's Prim reads only
     // those. (Which forest Prim grows, and in what order, does not depend on
     // the order it reads a hole's arcs in: an offer is the least of them.)
@@ -96,15 +100,29 @@ class SpanningForest {
     root_.resize(n_);
   }
 
-  // Grows the forest under `pi` and returns its cost, summed by edge index
-  // (so the same bits however it was grown); the tree's edges' `cost` is then
-  // up to date.
-  double grow(const std::vector<double>& pi) {
+  std::uint32_t parts() const { return static_cast<std::uint32_t>(parts_.size()); }
+
+  // Grows part p's forest under `pi` over the edges inside it (the whole
+  // forest, unsplit). Parts may grow at once, on threads of their own; then
+  // join() makes them one forest.
+  void grow_part(std::uint32_t p, const std::vector<double>& pi) {
+    Part& part = parts_[p];
+    part.grow(*this, pi);
+    if (parts_.size() == 1) return;
+    // Sorted for Kruskal, with this part's share of the edges between parts.
+    std::sort(part.grown.begin(), part.grown.end());
+    for (Priced& edge : part.between) edge.first = cost(edge.second, pi);
+    std::sort(part.between.begin(), part.between.end());
+  }
+
+  // Once every part has grown under `pi`: the forest, and its cost summed by
+  // edge index (the same bits however it was grown); the tree's edges' `cost`
+  // is then up to date.
+  double join(const std::vector<double>& pi) {
     if (parts_.size() == 1) {
-      parts_[0].grow(*this, pi);
       for (auto [c, e] : parts_[0].grown) mark(e);
     } else {
-      grow_parts(pi);
+      join_parts();
     }
     tree_.clear();
     double total = 0.0;
@@ -118,6 +136,12 @@ class SpanningForest {
       in_tree_[word] = 0;
     }
     return total;
+  }
+
+  // The forest under `pi` on this thread: its cost, as join() gives it.
+  double grow(const std::vector<double>& pi) {
+    for (std::uint32_t p = 0; p < parts(); ++p) grow_part(p, pi);
+    return join(pi);
   }
 
  private:
@@ -150,7 +174,7 @@ class SpanningForest {
     std::vector<Priced> grown;    // the forest's edges, as taken
     std::vector<Priced> between;  // its share of the edges between parts
 
-    void reserve(HoleIndex n) {
+    void size_arrays(HoleIndex n) {
       offer_cost.assign(n, 0.0);
       offer_edge.assign(n, 0);
       heap_at.assign(n, kOutside);
@@ -219,18 +243,8 @@ class SpanningForest {
     }
   };
 
-  void grow_parts(const std::vector<double>& pi) {
+  void join_parts() {
     const auto parts = static_cast<std::uint32_t>(parts_.size());
-    // Each part grows its forest and sorts it, and prices and sorts its share
-    // of the edges between parts.
-#pragma omp parallel for schedule(static, 1) num_threads(parts)
-    for (std::uint32_t task = 0; task < parts; ++task) {
-      Part& part = parts_[task];
-      part.grow(*this, pi);
-      std::sort(part.grown.begin(), part.grown.end());
-      for (Priced& edge : part.between) edge.first = cost(edge.second, pi);
-      std::sort(part.between.begin(), part.between.end());
-    }
     // Kruskal over the parts' forests and the edges between parts, merged in order.
     std::iota(root_.begin(), root_.end(), HoleIndex{0});
     auto find = [this](HoleIndex x) {
@@ -423,7 +437,7 @@ Candidates alpha_candidates(const Space& space, const Candidates& nearest, int k
     std::sort(by_position.begin(), by_position.end(), [&](HoleIndex a, HoleIndex b) {
       return along(a) < along(b) || (along(a) == along(b) && a < b);
     });
-    const auto parts = static_cast<std::uint32_t>(std::min<HoleIndex>(static_cast<HoleIndex>(threads), n));
+    const auto parts = static_cast<std::uint32_t>(std::min<HoleIndex>(std::min(threads, kMaxParts), n));
     std::vector<std::uint32_t> part_of(n);
     for (HoleIndex r = 0; r < n; ++r) {
       part_of[by_position[r]] = static_cast<std::uint32_t>(static_cast<std::uint64_t>(r) * parts / n);
@@ -446,11 +460,12 @@ Candidates alpha_candidates(const Space& space, const Candidates& nearest, int k
   // without); with_quadrant_neighbours joins them, and with the ascent the
   // 5 lists of brd14051 miss 23 edges of a 0.12 % route, against 102 without.
   // A forest now means degenerate input (many holes on one spot).
-  const double plain_tree = forest.grow(pi);
-  if (in_tree.size() + 1 < static_cast<std::size_t>(n)) ascent_iterations = 0;
-  for (int it = 0; it < ascent_iterations; ++it) {
-    // The first step's tree is the plain one, just built.
-    const double w = (it == 0 ? plain_tree : forest.grow(pi)) - 2.0 * std::accumulate(pi.begin(), pi.end(), 0.0);
+  int it = 0;
+  // One step, given the tree under the current pi (the first: the plain tree);
+  // says whether to take another.
+  auto take_step = [&](double tree_cost) {
+    if (it == 0 && in_tree.size() + 1 < static_cast<std::size_t>(n)) return false;
+    const double w = tree_cost - 2.0 * std::accumulate(pi.begin(), pi.end(), 0.0);
     if (it == 0) {
       double mean = 0.0;
       for (std::uint32_t e : in_tree) mean += edges[e].length;
@@ -472,8 +487,22 @@ Candidates alpha_candidates(const Space& space, const Candidates& nearest, int k
       pi[i] += step * (0.7 * v + 0.3 * last_v[i]);
       last_v[i] = v;
     }
-    if (norm == 0.0) break;
+    if (norm == 0.0) return false;
     step *= decay;
+    return ++it < ascent_iterations;
+  };
+  // A round a step: the parts' trees grown at once (a slot each), then joined
+  // and the step taken by one thread. The colony's rounds, not a parallel
+  // region a step: on a busy machine a thread the kernel has put aside held
+  // up every step's region (pcb1173 beside two busy processes: a 119-819 ms
+  // start on two threads against 39-83 ms on one), where a round goes on
+  // without a worker that has taken no slot.
+  if (ascent_iterations > 0) {
+    std::vector<double> busy;
+    parallel_rounds(
+        static_cast<int>(forest.parts()), threads, busy,
+        [&](int part, int) { forest.grow_part(static_cast<std::uint32_t>(part), pi); },
+        [&] { return take_step(forest.join(pi)); });
   }
   pi = best_pi;
   forest.grow(pi);

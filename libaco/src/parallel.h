@@ -1,9 +1,10 @@
 #pragma once
-// The one parallel scaffold of the colony: a team of OpenMP workers that stays
-// up for the whole run. Each round the workers take slots [0, count) one at
-// a time (body(k, worker) writes only slot k and worker's own scratch); the
-// worker that finishes the round's last slot then runs between(), the
-// barrier-synced part, which says whether to go on.
+// The one parallel scaffold of the solver (the colony's iterations, and the
+// steps of the ascent that makes its candidate lists): a team of OpenMP
+// workers that stays up for the whole run. Each round the workers take slots
+// [0, count) one at a time (body(k, worker) writes only slot k and worker's
+// own scratch); the worker that finishes the round's last slot then runs
+// between(), the barrier-synced part, which says whether to go on.
 //
 // Why not `omp parallel for` per round: a focused round lasts a few hundred
 // microseconds, and libgomp's barrier spins for up to a few milliseconds
