@@ -383,7 +383,8 @@ Candidates joined_nearest(const Space& space, int k, int threads) {
 std::vector<std::pair<HoleIndex, HoleIndex>> candidate_edges(const Candidates& candidates, HoleIndex holes) {
   // Each edge's larger end, bucketed by its smaller end (a counting sort);
   // each bucket then sorted and without repeats. The same list as sorting all
-  // n k pairs, at O(n k log k): the sort was 3 ms of pcb1173's 36 ms start.
+  // n k pairs, at O(n k log k): 16 nearest of uniform holes, 0.5-0.9 ms
+  // against 1.3-1.8 ms on 1173 of them, 73 ms against 185 ms on 100 000.
   std::vector<std::uint32_t> first(static_cast<std::size_t>(holes) + 1, 0);
   for (HoleIndex i = 0; i < holes; ++i) {
     for (int r = 0; r < candidates.k; ++r) ++first[std::min(i, candidates.of(i)[r]) + 1];
@@ -419,12 +420,13 @@ Candidates alpha_candidates(const Space& space, const Candidates& nearest, int k
   // The neighbour graph, each edge once.
   std::vector<SpanningForest::Edge> graph;
   const std::vector<std::pair<HoleIndex, HoleIndex>> pairs = candidate_edges(nearest, n);
-  graph.reserve(pairs.size());  // fresh pages cost on a VM: growing it step by step was 2 of pcb1173's 36 ms
+  graph.reserve(pairs.size());  // fresh pages cost on a VM: growing it step by step took 2 ms more on pcb1173
   for (auto [a, b] : pairs) graph.push_back({a, b, space.d(a, b)});
   SpanningForest forest(std::move(graph), n);
   if (threads > 1) {
-    // As many parts as threads: strips across the longer side of the holes'
-    // bounding box, each of as many holes, so that few edges run between parts.
+    // As many parts as threads (up to kMaxParts): strips across the longer
+    // side of the holes' bounding box, each of as many holes, so that few
+    // edges run between parts.
     double x0 = std::numeric_limits<double>::infinity(), x1 = -x0, y0 = x0, y1 = -x0;
     for (HoleIndex h = 0; h < n; ++h) {
       x0 = std::min(x0, space.point(h).x), x1 = std::max(x1, space.point(h).x);
