@@ -419,9 +419,12 @@ Candidates alpha_candidates(const Space& space, const Candidates& nearest, int k
   if (out.k == 0) return out;
   // The neighbour graph, each edge once.
   std::vector<SpanningForest::Edge> graph;
-  const std::vector<std::pair<HoleIndex, HoleIndex>> pairs = candidate_edges(nearest, n);
-  graph.reserve(pairs.size());  // fresh pages cost on a VM: growing it step by step took 2 ms more on pcb1173
-  for (auto [a, b] : pairs) graph.push_back({a, b, space.d(a, b)});
+  {
+    // Freed before the forest is built: 13 MB at 100 000 holes.
+    const std::vector<std::pair<HoleIndex, HoleIndex>> pairs = candidate_edges(nearest, n);
+    graph.reserve(pairs.size());  // fresh pages cost on a VM: growing it step by step took 2 ms more on pcb1173
+    for (auto [a, b] : pairs) graph.push_back({a, b, space.d(a, b)});
+  }
   SpanningForest forest(std::move(graph), n);
   if (threads > 1) {
     // As many parts as threads (up to kMaxParts): strips across the longer
