@@ -19,17 +19,10 @@ class BucketGrid {
  public:
   explicit BucketGrid(const Space& s) : s_(s) {
     const HoleIndex n = s.holes();
-    double minx = std::numeric_limits<double>::infinity(), miny = minx, maxx = -minx, maxy = -minx;
-    for (HoleIndex i = 0; i < n; ++i) {
-      minx = std::min(minx, s.point(i).x);
-      maxx = std::max(maxx, s.point(i).x);
-      miny = std::min(miny, s.point(i).y);
-      maxy = std::max(maxy, s.point(i).y);
-    }
-    if (n == 0) minx = miny = maxx = maxy = 0;
-    x0_ = minx;
-    y0_ = miny;
-    const double w = std::max(maxx - minx, 1e-9), h = std::max(maxy - miny, 1e-9);
+    const auto [lo, hi] = s.bounds();
+    x0_ = lo.x;
+    y0_ = lo.y;
+    const double w = std::max(hi.x - lo.x, 1e-9), h = std::max(hi.y - lo.y, 1e-9);
     cell_ = std::max(std::sqrt(w * h / std::max<double>(n, 1) * 2.0), std::max(w, h) / 4096.0);
     nx_ = static_cast<int>(std::min(4096.0, std::floor(w / cell_) + 1));
     ny_ = static_cast<int>(std::min(4096.0, std::floor(h / cell_) + 1));

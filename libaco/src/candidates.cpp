@@ -283,6 +283,25 @@ class SpanningForest {
   std::vector<HoleIndex> root_;  // after split(): Kruskal's union-find
 };
 
+// Which of `parts` strips across the longer side of the holes' bounding box
+// each hole is in, each strip of as many holes: few edges run between strips.
+std::vector<std::uint32_t> strips(const Space& space, std::uint32_t parts) {
+  const HoleIndex n = space.holes();
+  const auto [lo, hi] = space.bounds();
+  const bool across_x = hi.x - lo.x >= hi.y - lo.y;
+  auto along = [&](HoleIndex h) { return across_x ? space.point(h).x : space.point(h).y; };
+  std::vector<HoleIndex> by_position(n);
+  std::iota(by_position.begin(), by_position.end(), HoleIndex{0});
+  std::sort(by_position.begin(), by_position.end(), [&](HoleIndex a, HoleIndex b) {
+    return along(a) < along(b) || (along(a) == along(b) && a < b);
+  });
+  std::vector<std::uint32_t> part_of(n);
+  for (HoleIndex r = 0; r < n; ++r) {
+    part_of[by_position[r]] = static_cast<std::uint32_t>(static_cast<std::uint64_t>(r) * parts / n);
+  }
+  return part_of;
+}
+
 }  // namespace
 
 Candidates build_candidates(const Space& space, int k, int threads) {
@@ -426,28 +445,11 @@ Candidates alpha_candidates(const Space& space, const Candidates& nearest, int k
     for (auto [a, b] : pairs) graph.push_back({a, b, space.d(a, b)});
   }
   SpanningForest forest(std::move(graph), n);
-  if (threads > 1) {
-    // As many parts as threads (up to kMaxParts): strips across the longer
-    // side of the holes' bounding box, each of as many holes, so that few
-    // edges run between parts.
-    double x0 = std::numeric_limits<double>::infinity(), x1 = -x0, y0 = x0, y1 = -x0;
-    for (HoleIndex h = 0; h < n; ++h) {
-      x0 = std::min(x0, space.point(h).x), x1 = std::max(x1, space.point(h).x);
-      y0 = std::min(y0, space.point(h).y), y1 = std::max(y1, space.point(h).y);
-    }
-    const bool across_x = x1 - x0 >= y1 - y0;
-    auto along = [&](HoleIndex h) { return across_x ? space.point(h).x : space.point(h).y; };
-    std::vector<HoleIndex> by_position(n);
-    std::iota(by_position.begin(), by_position.end(), HoleIndex{0});
-    std::sort(by_position.begin(), by_position.end(), [&](HoleIndex a, HoleIndex b) {
-      return along(a) < along(b) || (along(a) == along(b) && a < b);
-    });
+  // Parts only for the ascent's steps, which run on the threads; without
+  // steps the one tree is grown here, and parts would only cost a join.
+  if (threads > 1 && ascent_iterations > 0) {
     const auto parts = static_cast<std::uint32_t>(std::min<HoleIndex>(std::min(threads, kMaxParts), n));
-    std::vector<std::uint32_t> part_of(n);
-    for (HoleIndex r = 0; r < n; ++r) {
-      part_of[by_position[r]] = static_cast<std::uint32_t>(static_cast<std::uint64_t>(r) * parts / n);
-    }
-    forest.split(part_of, parts);
+    forest.split(strips(space, parts), parts);
   }
   const auto& edges = forest.edges();
   const auto& in_tree = forest.tree();

@@ -4,8 +4,11 @@
 // (edges entering V). A route is then always a cycle stored as an array whose
 // position 0 holds V, and every edge is read in array order, so the
 // direction-dependent cost of V's two edges is always right.
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
+#include <utility>
 #include <vector>
 
 #include "aco/problem.h"
@@ -29,6 +32,18 @@ class Space {
   // Array length of a route: the holes, plus V for an open path.
   HoleIndex route_size() const { return open_ ? n_ + 1 : n_; }
   const Point2& point(HoleIndex i) const { return pts_[i]; }
+  // The holes' bounding box: its lower-left and upper-right corners (the
+  // origin twice when there are none).
+  std::pair<Point2, Point2> bounds() const {
+    if (n_ == 0) return {};
+    const double inf = std::numeric_limits<double>::infinity();
+    Point2 lo{inf, inf}, hi{-inf, -inf};
+    for (const Point2& q : pts_) {
+      lo = {std::min(lo.x, q.x), std::min(lo.y, q.y)};
+      hi = {std::max(hi.x, q.x), std::max(hi.y, q.y)};
+    }
+    return {lo, hi};
+  }
   Point2 start() const { return start_; }
 
   double d(HoleIndex a, HoleIndex b) const { return distance(metric_, pts_[a], pts_[b]); }
