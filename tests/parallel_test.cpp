@@ -1,10 +1,12 @@
 // The colony's one parallel scaffold (libaco/src/parallel.h): each round's
 // slots run exactly once, between() runs after all of them and before any of
-// the next round's, and failures stop the team, on any number of workers.
+// the next round's, and failures stop the team, on any number of workers; a
+// team kept for a whole solve does so job after job.
 // scripts/tsan runs these under ThreadSanitizer too.
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <memory>
 #include <stdexcept>
 #include <vector>
 
@@ -69,6 +71,72 @@ TEST(parallel_test, a_failing_between_stops_the_team_and_is_rethrown) {
                      }),
                  std::logic_error);
     EXPECT_EQ(round, 3);
+  }
+}
+
+// Many short jobs in a row, as a solve posts them (rows, the ascent's steps,
+// the iterations): a worker that looks in late must join the job under way
+// or none, never one that has ended (its state is gone: the sanitizer runs
+// catch that).
+TEST(parallel_test, a_team_runs_job_after_job_each_round_whole_and_each_chunk_once) {
+  for (const int threads : {1, 2, 3, 5}) {
+    std::atomic<int> wrong{0};
+    int jobs_done = 0;
+    aco::detail::Team::run(threads, [&](aco::detail::Team& team) {
+      EXPECT_EQ(team.threads(), threads);
+      for (int job = 0; job < 400; ++job) {
+        const int count = 1 + job % 9, rounds = 1 + job % 4;
+        int round = 0;
+        auto ran_in = std::make_unique<std::vector<int>>(count, -1);  // on the heap, so a stale reader is seen
+        std::vector<double> busy;
+        team.rounds(
+            count, busy,
+            [&](int k, int worker) {
+              if ((*ran_in)[static_cast<std::size_t>(k)] != round - 1 || worker < 0 || worker >= threads) ++wrong;
+              (*ran_in)[static_cast<std::size_t>(k)] = round;
+            },
+            [&] {
+              for (int r : *ran_in) {
+                if (r != round) ++wrong;
+              }
+              return ++round < rounds;
+            });
+        if (round != rounds) ++wrong;
+        const std::size_t size = static_cast<std::size_t>(job) * 7;
+        auto hits = std::make_unique<std::vector<std::atomic<int>>>(size);
+        team.chunks(size, 64, [&](std::size_t begin, std::size_t end, int) {
+          if (begin >= end || end > size || end - begin > 64) ++wrong;
+          for (std::size_t i = begin; i < end; ++i) ++(*hits)[i];
+        });
+        for (const auto& h : *hits) {
+          if (h.load() != 1) ++wrong;
+        }
+        ++jobs_done;
+      }
+    });
+    EXPECT_EQ(wrong.load(), 0) << threads << " threads";
+    EXPECT_EQ(jobs_done, 400);
+  }
+}
+
+TEST(parallel_test, a_team_goes_on_after_a_failed_job_and_a_failing_solve_is_rethrown) {
+  for (const int threads : {1, 2, 3}) {
+    int after = 0;
+    EXPECT_THROW(aco::detail::Team::run(threads,
+                                        [&](aco::detail::Team& team) {
+                                          std::vector<double> busy;
+                                          EXPECT_THROW(team.rounds(
+                                                           6, busy, [](int k, int) {
+                                                             if (k == 2) throw std::runtime_error("slot");
+                                                           },
+                                                           [] { return true; }),
+                                                       std::runtime_error);
+                                          team.rounds(
+                                              6, busy, [](int, int) {}, [&] { return ++after < 50; });
+                                          throw std::logic_error("solve");
+                                        }),
+                 std::logic_error);
+    EXPECT_EQ(after, 50) << threads << " threads";
   }
 }
 

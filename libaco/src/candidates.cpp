@@ -31,6 +31,9 @@ using Tree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<do
 // A spanning forest's parts each keep arrays over all holes, so there are at
 // most this many (memory O(n k) whatever --threads says).
 constexpr int kMaxParts = 8;
+// Candidate rows a worker takes at a time: small enough that a worker that
+// comes late, or is put aside, holds up little.
+constexpr std::size_t kRowChunk = 64;
 
 // The minimum spanning forest of a fixed graph under costs
 // length(a, b) + pi[a] + pi[b] that change at every step of the ascent, with
@@ -304,7 +307,7 @@ std::vector<std::uint32_t> strips(const Space& space, std::uint32_t parts) {
 
 }  // namespace
 
-Candidates build_candidates(const Space& space, int k, int threads) {
+Candidates build_candidates(const Space& space, int k, Team& team) {
   const HoleIndex n = space.holes();
   Candidates c;
   c.k = std::max(0, std::min<int>(k, static_cast<int>(n) - 1));
@@ -317,34 +320,42 @@ Candidates build_candidates(const Space& space, int k, int threads) {
   // resolved by our own sort (distance in the problem's metric, then index),
   // which keeps the lists identical on every machine and thread count.
   const std::size_t want = std::min<std::size_t>(n, static_cast<std::size_t>(c.k) + 1 + 4);
-  // Rows are independent: each worker fills its share with its own scratch.
-#pragma omp parallel num_threads(std::max(1, threads))
-  {
-  std::vector<std::size_t> idx(want);
-  std::vector<double> dist2(want);
-  std::vector<std::pair<double, HoleIndex>> row;
-#pragma omp for schedule(static)
-  for (HoleIndex i = 0; i < n; ++i) {
-    const double q[2] = {space.point(i).x, space.point(i).y};
-    std::size_t found = tree.knnSearch(q, want, idx.data(), dist2.data());
-    row.clear();
-    for (std::size_t r = 0; r < found; ++r) {
-      auto j = static_cast<HoleIndex>(idx[r]);
-      if (j != i) row.emplace_back(space.d(i, j), j);
-    }
-    std::sort(row.begin(), row.end());
-    if (row.size() < static_cast<std::size_t>(c.k)) {
-      // Many coincident points crowd the k-d result; fall back to a full scan for this row.
+  // Rows are independent: each worker fills chunks of them with its own scratch.
+  struct Scratch {
+    std::vector<std::size_t> idx;
+    std::vector<double> dist2;
+    std::vector<std::pair<double, HoleIndex>> row;
+  };
+  std::vector<Scratch> scratch(static_cast<std::size_t>(team.threads()));
+  for (Scratch& sc : scratch) {
+    sc.idx.resize(want);
+    sc.dist2.resize(want);
+  }
+  team.chunks(n, kRowChunk, [&](std::size_t begin, std::size_t end, int me) {
+    std::vector<std::size_t>& idx = scratch[static_cast<std::size_t>(me)].idx;
+    std::vector<double>& dist2 = scratch[static_cast<std::size_t>(me)].dist2;
+    std::vector<std::pair<double, HoleIndex>>& row = scratch[static_cast<std::size_t>(me)].row;
+    for (auto i = static_cast<HoleIndex>(begin); i < end; ++i) {
+      const double q[2] = {space.point(i).x, space.point(i).y};
+      std::size_t found = tree.knnSearch(q, want, idx.data(), dist2.data());
       row.clear();
-      for (HoleIndex j = 0; j < n; ++j) {
+      for (std::size_t r = 0; r < found; ++r) {
+        auto j = static_cast<HoleIndex>(idx[r]);
         if (j != i) row.emplace_back(space.d(i, j), j);
       }
-      std::partial_sort(row.begin(), row.begin() + c.k, row.end());
+      std::sort(row.begin(), row.end());
+      if (row.size() < static_cast<std::size_t>(c.k)) {
+        // Many coincident points crowd the k-d result; fall back to a full scan for this row.
+        row.clear();
+        for (HoleIndex j = 0; j < n; ++j) {
+          if (j != i) row.emplace_back(space.d(i, j), j);
+        }
+        std::partial_sort(row.begin(), row.begin() + c.k, row.end());
+      }
+      HoleIndex* out = c.list.data() + static_cast<std::size_t>(i) * c.k;
+      for (int r = 0; r < c.k; ++r) out[r] = row[r].second;
     }
-    HoleIndex* out = c.list.data() + static_cast<std::size_t>(i) * c.k;
-    for (int r = 0; r < c.k; ++r) out[r] = row[r].second;
-  }
-  }
+  });
   return c;
 }
 
@@ -376,8 +387,8 @@ Candidates with_quadrant_neighbours(const Space& space, Candidates nearest) {
   return nearest;
 }
 
-Candidates joined_nearest(const Space& space, int k, int threads) {
-  Candidates nearest = build_candidates(space, k, threads);
+Candidates joined_nearest(const Space& space, int k, Team& team) {
+  Candidates nearest = build_candidates(space, k, team);
   const HoleIndex n = space.holes();
   std::vector<HoleIndex> root(n);
   std::iota(root.begin(), root.end(), 0);
@@ -430,7 +441,8 @@ std::vector<std::pair<HoleIndex, HoleIndex>> candidate_edges(const Candidates& c
   return edges;
 }
 
-Candidates alpha_candidates(const Space& space, const Candidates& nearest, int k, int ascent_iterations, int threads) {
+Candidates alpha_candidates(const Space& space, const Candidates& nearest, int k, int ascent_iterations, Team& team) {
+  const int threads = team.threads();
   const HoleIndex n = space.holes();
   Candidates out;
   out.k = std::min(k, nearest.k);
@@ -499,15 +511,15 @@ Candidates alpha_candidates(const Space& space, const Candidates& nearest, int k
     return ++it < ascent_iterations;
   };
   // A round a step: the parts' trees grown at once (a slot each), then joined
-  // and the step taken by one thread. The colony's rounds, not a parallel
+  // and the step taken by one thread. The team's rounds, not a parallel
   // region a step: on a busy machine a thread the kernel has put aside held
   // up every step's region (pcb1173 beside two busy processes: a 119-819 ms
   // start on two threads against 39-83 ms on one), where a round goes on
   // without a worker that has taken no slot.
   if (ascent_iterations > 0) {
     std::vector<double> busy;
-    parallel_rounds(
-        static_cast<int>(forest.parts()), threads, busy,
+    team.rounds(
+        static_cast<int>(forest.parts()), busy,
         [&](int part, int) { forest.grow_part(static_cast<std::uint32_t>(part), pi); },
         [&] { return take_step(forest.join(pi)); });
   }
@@ -572,25 +584,42 @@ Candidates alpha_candidates(const Space& space, const Candidates& nearest, int k
     if (up[a] != up[b]) return -1.0;  // different trees
     return std::max({m, longest[a], longest[b]});
   };
-#pragma omp parallel num_threads(std::max(1, threads))
-  {
-  std::vector<std::pair<double, int>> row;
-#pragma omp for schedule(static)
-  for (HoleIndex i = 0; i < n; ++i) {
-    const HoleIndex* nr = nearest.of(i);
-    row.clear();
-    for (int r = 0; r < nearest.k; ++r) {
-      const double m = path_longest(i, nr[r]);
-      const double c = space.d(i, nr[r]) + pi[i] + pi[nr[r]];
-      row.push_back({m < 0 ? 0.0 : c - m, r});
+  std::vector<std::vector<std::pair<double, int>>> rows(static_cast<std::size_t>(threads));
+  team.chunks(n, kRowChunk, [&](std::size_t begin, std::size_t end, int me) {
+    std::vector<std::pair<double, int>>& row = rows[static_cast<std::size_t>(me)];
+    for (auto i = static_cast<HoleIndex>(begin); i < end; ++i) {
+      const HoleIndex* nr = nearest.of(i);
+      row.clear();
+      for (int r = 0; r < nearest.k; ++r) {
+        const double m = path_longest(i, nr[r]);
+        const double c = space.d(i, nr[r]) + pi[i] + pi[nr[r]];
+        row.push_back({m < 0 ? 0.0 : c - m, r});
+      }
+      std::stable_sort(row.begin(), row.end());
+      std::sort(row.begin(), row.begin() + out.k, [](auto x, auto y) { return x.second < y.second; });
+      HoleIndex* o = out.list.data() + static_cast<std::size_t>(i) * out.k;
+      for (int r = 0; r < out.k; ++r) o[r] = nr[row[r].second];
     }
-    std::stable_sort(row.begin(), row.end());
-    std::sort(row.begin(), row.begin() + out.k, [](auto x, auto y) { return x.second < y.second; });
-    HoleIndex* o = out.list.data() + static_cast<std::size_t>(i) * out.k;
-    for (int r = 0; r < out.k; ++r) o[r] = nr[row[r].second];
-  }
-  }
+  });
   return out;
+}
+
+Candidates build_candidates(const Space& space, int k, int threads) {
+  Candidates c;
+  Team::run(threads, [&](Team& team) { c = build_candidates(space, k, team); });
+  return c;
+}
+
+Candidates joined_nearest(const Space& space, int k, int threads) {
+  Candidates c;
+  Team::run(threads, [&](Team& team) { c = joined_nearest(space, k, team); });
+  return c;
+}
+
+Candidates alpha_candidates(const Space& space, const Candidates& nearest, int k, int ascent_iterations, int threads) {
+  Candidates c;
+  Team::run(threads, [&](Team& team) { c = alpha_candidates(space, nearest, k, ascent_iterations, team); });
+  return c;
 }
 
 }  // namespace aco::detail

@@ -9,6 +9,8 @@
 
 namespace aco::detail {
 
+class Team;  // parallel.h
+
 struct Candidates {
   int k = 0;
   std::vector<HoleIndex> list;  // n * k, row i = the k nearest holes of i
@@ -17,8 +19,9 @@ struct Candidates {
 };
 
 // threads: how many workers fill the rows (each row alone, so any count gives
-// the same lists).
+// the same lists); or the solve's team. So too below.
 Candidates build_candidates(const Space& space, int k, int threads = 1);
+Candidates build_candidates(const Space& space, int k, Team& team);
 
 // How far (in rings of the bucket grid, about 1.4 mean hole spacings each)
 // the quadrant search looks: far enough to join the clusters of fl1400 and
@@ -38,6 +41,7 @@ Candidates with_quadrant_neighbours(const Space& space, Candidates nearest);
 // are one piece, the quadrant neighbours changed the lists of pla7397 for the
 // worse (30 s, 3 seeds: 0.257 0.196 0.248 % with them, 0.154 0.202 0.159 % without).
 Candidates joined_nearest(const Space& space, int k, int threads = 1);
+Candidates joined_nearest(const Space& space, int k, Team& team);
 
 // Every edge between a hole and one of its candidates, once, as (a, b) with
 // a < b, in that order: an edge in only one of its ends' lists counts too.
@@ -55,5 +59,6 @@ std::vector<std::pair<HoleIndex, HoleIndex>> candidate_edges(const Candidates& c
 // `threads` workers grow each step's tree (one part of the holes each, then
 // joined) and fill the rows; any count gives the same lists.
 Candidates alpha_candidates(const Space& space, const Candidates& nearest, int k, int ascent_iterations, int threads = 1);
+Candidates alpha_candidates(const Space& space, const Candidates& nearest, int k, int ascent_iterations, Team& team);
 
 }  // namespace aco::detail

@@ -168,16 +168,15 @@ struct alignas(64) AntRoute {
 
 class Colony {
  public:
-  Colony(const Problem& problem, const Params& params)
-      : problem_(problem), p_(params), space_(problem), n_(space_.holes()) {
-    const int threads = p_.threads;
+  Colony(const Problem& problem, const Params& params, detail::Team& team)
+      : problem_(problem), p_(params), team_(team), space_(problem), n_(space_.holes()) {
     if (n_ <= kFullListLimit) {
-      cand_ = detail::build_candidates(space_, static_cast<int>(n_) - 1, threads);
+      cand_ = detail::build_candidates(space_, static_cast<int>(n_) - 1, team_);
     } else if (uses_alpha_lists(n_, p_.local_search)) {
-      cand_ = detail::alpha_candidates(space_, detail::joined_nearest(space_, kAlphaFrom, threads), p_.candidates,
-                                       ascent_iterations(n_, p_.time_limit_s), threads);
+      cand_ = detail::alpha_candidates(space_, detail::joined_nearest(space_, kAlphaFrom, team_), p_.candidates,
+                                       ascent_iterations(n_, p_.time_limit_s), team_);
     } else {
-      cand_ = detail::build_candidates(space_, p_.candidates, threads);
+      cand_ = detail::build_candidates(space_, p_.candidates, team_);
     }
     k_ = cand_.k;
     const std::size_t slots = static_cast<std::size_t>(n_) * k_;
@@ -276,6 +275,7 @@ class Colony {
   Clock clock_;
   const Problem& problem_;
   Params p_;
+  detail::Team& team_;
   Space space_;
   HoleIndex n_;
   Candidates cand_;
@@ -973,7 +973,7 @@ Solution Colony::run() {
     return true;
   };
   order_ants();
-  if (p_.iterations >= 1) detail::parallel_rounds(p_.ants, p_.threads, sol.thread_busy_s, ant, update);
+  if (p_.iterations >= 1) team_.rounds(p_.ants, sol.thread_busy_s, ant, update);
   sol.iterations = std::min(it, p_.iterations);
   sol.order = to_order(best_route);
   sol.length = route_length(problem_, sol.order);
@@ -1066,8 +1066,14 @@ Solution solve(const Problem& problem, const Params& params) {
     s.trace.push_back({0, 0.0, s.length});
     return s;
   }
-  Colony colony(problem, p);
-  return colony.run();
+  // One team for the whole solve: the candidate lists' rows and ascent and
+  // the iterations all run on it, and a worker that starts late is never waited for.
+  Solution solution;
+  detail::Team::run(p.threads, [&](detail::Team& team) {
+    Colony colony(problem, p, team);
+    solution = colony.run();
+  });
+  return solution;
 }
 
 }  // namespace aco

@@ -1,7 +1,7 @@
 #pragma once
 // The one parallel scaffold of the solver (the colony's iterations, and the
-// steps of the ascent that makes its candidate lists): a team of OpenMP
-// workers that stays up for the whole run. Each round the workers take slots
+// candidate lists' rows and ascent): a team of OpenMP workers that stays up
+// for the whole solve (Team). Each round the workers take slots
 // [0, count) one at a time (body(k, worker) writes only slot k and worker's
 // own scratch); the worker that finishes the round's last slot then runs
 // between(), the barrier-synced part, which says whether to go on.
@@ -20,6 +20,7 @@
 // determinism) is kept and rethrown once the team has stopped.
 #include <omp.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
@@ -76,79 +77,171 @@ class Signal {
   std::condition_variable woken_;
 };
 
+// A team of threads kept for a whole solve: one OpenMP region, whose thread
+// 0 runs the solve and calls rounds(); the others wait for rounds to help
+// with, and join those under way. A region per stage (the candidate rows,
+// the ascent, the iterations) waited at its end for every worker, and on
+// this VM the first one often took 10-13 ms to start a worker whose CPU had
+// been idle: pcb1173's two-thread start took 45-52 ms in most runs against
+// 33-35 on one. Here the master goes on alone, and a late worker helps from
+// when it comes.
+class Team {
+ public:
+  // Runs main(team) on this thread, with threads - 1 workers beside it.
+  template <class Main>
+  static void run(int threads, Main&& main) {
+    Team team(std::max(1, threads));
+    if (team.threads_ == 1) {
+      main(team);
+      return;
+    }
+    std::exception_ptr error;
+#pragma omp parallel num_threads(team.threads_)
+    {
+      if (omp_get_thread_num() == 0) {
+        try {
+          main(team);
+        } catch (...) {
+          error = std::current_exception();
+        }
+        team.closed_.store(true);
+        team.posted_.notify();
+      } else {
+        team.serve(omp_get_thread_num());
+      }
+    }
+    if (error) std::rethrow_exception(error);
+  }
+
+  int threads() const { return threads_; }
+
+  // body(begin, end, worker) over [0, count) in chunks of `chunk`: one round.
+  template <class Body>
+  void chunks(std::size_t count, std::size_t chunk, Body&& body) {
+    std::vector<double> busy;
+    rounds(
+        static_cast<int>((count + chunk - 1) / chunk), busy,
+        [&](int c, int worker) {
+          const std::size_t begin = static_cast<std::size_t>(c) * chunk;
+          body(begin, std::min(count, begin + chunk), worker);
+        },
+        [] { return false; });
+  }
+
+  // Rounds of slots [0, count) until between() says stop (see the top). Only
+  // from the thread that runs main.
+  template <class Body, class Between>
+  void rounds(int count, std::vector<double>& busy_s, Body&& body, Between&& between) {
+    if (busy_s.size() < static_cast<std::size_t>(threads_)) busy_s.resize(static_cast<std::size_t>(threads_), 0.0);
+    std::vector<std::exception_ptr> errors(static_cast<std::size_t>(count));
+    std::exception_ptr between_error;
+    auto run_slot = [&](int k, int worker, double& busy) {
+      const double t0 = omp_get_wtime();
+      try {
+        body(k, worker);
+      } catch (...) {
+        errors[static_cast<std::size_t>(k)] = std::current_exception();
+      }
+      busy += omp_get_wtime() - t0;
+    };
+    auto failed = [&] {
+      for (auto& e : errors) {
+        if (e) return true;
+      }
+      return false;
+    };
+    auto go_on = [&] {
+      if (failed()) return false;
+      try {
+        return static_cast<bool>(between());
+      } catch (...) {
+        between_error = std::current_exception();
+        return false;
+      }
+    };
+    if (threads_ <= 1 || count <= 0) {
+      double busy = 0.0;
+      do {
+        for (int k = 0; k < count; ++k) run_slot(k, 0, busy);
+      } while (go_on());
+      busy_s[0] += busy;
+    } else {
+      std::atomic<int> next_slot{0};  // the next slot of the round to hand out
+      std::atomic<int> done{0};       // the round's slots finished
+      std::atomic<unsigned> round{0};
+      std::atomic<bool> stop{false};
+      Signal next_round;
+      auto work = [&](int me) {
+        double busy = 0.0;
+        while (!stop.load()) {
+          const unsigned seen = round.load();
+          for (int k = next_slot.fetch_add(1); k < count; k = next_slot.fetch_add(1)) {
+            run_slot(k, me, busy);
+            if (done.fetch_add(1) + 1 < count) continue;
+            // Whoever finishes the round's last slot runs the serial part
+            // itself, and then hands out the next round's slots. A worker that
+            // has taken no slot of a round is not waited for: one the kernel
+            // has put aside, or that sleeps, joins when it wakes.
+            const bool more = go_on();
+            done.store(0);
+            stop.store(!more);
+            if (more) next_slot.store(0);
+            round.fetch_add(1);  // not seen + 1: this worker may have gone on into later rounds
+            next_round.notify();
+          }
+          // Also on stop: the last round may have ended between reading stop and round.
+          next_round.wait_until([&] { return round.load() != seen || stop.load(); });
+        }
+        busy_s[static_cast<std::size_t>(me)] += busy;
+      };
+      Job job{&work, [](void* w, int me) { (*static_cast<decltype(work)*>(w))(me); }};
+      job_.store(&job);
+      posted_jobs_.fetch_add(1);
+      posted_.notify();
+      work(0);
+      // No worker may be in `work` once this returns: one that counted itself
+      // in before the job was taken down is waited for; one after it sees none.
+      job_.store(nullptr);
+      while (inside_.load() != 0) Signal::cpu_relax();
+    }
+    for (auto& e : errors) {
+      if (e) std::rethrow_exception(e);
+    }
+    if (between_error) std::rethrow_exception(between_error);
+  }
+
+ private:
+  struct Job {
+    void* work;
+    void (*call)(void*, int);
+  };
+  explicit Team(int threads) : threads_(threads) {}
+  void serve(int me) {
+    unsigned seen = 0;
+    for (;;) {
+      posted_.wait_until([&] { return closed_.load() || posted_jobs_.load() != seen; });
+      if (closed_.load()) return;
+      seen = posted_jobs_.load();
+      // Counted in before looking: see the end of rounds(). A job already
+      // under way is joined; one that has stopped returns at once.
+      inside_.fetch_add(1);
+      const Job* job = job_.load();
+      if (job != nullptr) job->call(job->work, me);
+      inside_.fetch_sub(1);
+    }
+  }
+  int threads_;
+  std::atomic<const Job*> job_{nullptr};
+  std::atomic<unsigned> posted_jobs_{0};
+  std::atomic<int> inside_{0};
+  std::atomic<bool> closed_{false};
+  Signal posted_;
+};
+
+// Rounds on a team of their own (see Team::rounds).
 template <class Body, class Between>
 void parallel_rounds(int count, int threads, std::vector<double>& busy_s, Body&& body, Between&& between) {
-  if (busy_s.size() < static_cast<std::size_t>(threads)) busy_s.resize(static_cast<std::size_t>(threads), 0.0);
-  std::vector<std::exception_ptr> errors(static_cast<std::size_t>(count));
-  std::exception_ptr between_error;
-  // Busy time is added up where each worker keeps it, and into busy_s at the end.
-  auto run_slot = [&](int k, int worker, double& busy) {
-    const double t0 = omp_get_wtime();
-    try {
-      body(k, worker);
-    } catch (...) {
-      errors[static_cast<std::size_t>(k)] = std::current_exception();
-    }
-    busy += omp_get_wtime() - t0;
-  };
-  auto failed = [&] {
-    for (auto& e : errors) {
-      if (e) return true;
-    }
-    return false;
-  };
-  auto go_on = [&] {
-    if (failed()) return false;
-    try {
-      return static_cast<bool>(between());
-    } catch (...) {
-      between_error = std::current_exception();
-      return false;
-    }
-  };
-
-  if (threads <= 1 || count <= 0) {
-    double busy = 0.0;
-    do {
-      for (int k = 0; k < count; ++k) run_slot(k, 0, busy);
-    } while (go_on());
-    busy_s[0] += busy;
-  } else {
-    std::atomic<int> next_slot{0};  // the next slot of the round to hand out
-    std::atomic<int> done{0};       // the round's slots finished
-    std::atomic<unsigned> round{0};
-    std::atomic<bool> stop{false};
-    Signal next_round;
-#pragma omp parallel num_threads(threads)
-    {
-      const int me = omp_get_thread_num();
-      double busy = 0.0;
-      while (!stop.load()) {
-        const unsigned seen = round.load();
-        for (int k = next_slot.fetch_add(1); k < count; k = next_slot.fetch_add(1)) {
-          run_slot(k, me, busy);
-          if (done.fetch_add(1) + 1 < count) continue;
-          // Whoever finishes the round's last slot runs the serial part
-          // itself, and then hands out the next round's slots. A worker that
-          // has taken no slot of a round is not waited for: one the kernel
-          // has put aside, or that sleeps, joins when it wakes.
-          const bool more = go_on();
-          done.store(0);
-          stop.store(!more);
-          if (more) next_slot.store(0);
-          round.fetch_add(1);  // not seen + 1: this worker may have gone on into later rounds
-          next_round.notify();
-        }
-        // Also on stop: the last round may have ended between reading stop and round.
-        next_round.wait_until([&] { return round.load() != seen || stop.load(); });
-      }
-      busy_s[static_cast<std::size_t>(me)] += busy;
-    }
-  }
-  for (auto& e : errors) {
-    if (e) std::rethrow_exception(e);
-  }
-  if (between_error) std::rethrow_exception(between_error);
+  Team::run(threads, [&](Team& team) { team.rounds(count, busy_s, body, between); });
 }
 
 }  // namespace aco::detail
