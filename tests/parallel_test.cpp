@@ -14,6 +14,11 @@
 
 namespace {
 
+template <class Body, class Between>
+void rounds_on_a_team_of_their_own(int count, int threads, std::vector<double>& busy_s, Body&& body, Between&& between) {
+  aco::detail::Team::run(threads, [&](aco::detail::Team& team) { team.rounds(count, busy_s, body, between); });
+}
+
 TEST(parallel_test, every_slot_runs_once_a_round_and_between_runs_after_them_all) {
   for (const int threads : {1, 2, 3, 5}) {
     const int count = 7, rounds = 3000;
@@ -21,7 +26,7 @@ TEST(parallel_test, every_slot_runs_once_a_round_and_between_runs_after_them_all
     std::vector<int> ran_in(count, -1);        // the round each slot last ran in
     std::atomic<int> wrong{0};
     std::vector<double> busy;
-    aco::detail::parallel_rounds(
+    rounds_on_a_team_of_their_own(
         count, threads, busy,
         [&](int k, int worker) {
           // Reads what between() wrote: it must have finished before this round began.
@@ -45,7 +50,7 @@ TEST(parallel_test, a_failing_slot_stops_the_team_and_the_first_failure_by_slot_
     int round = 0;
     std::vector<double> busy;
     try {
-      aco::detail::parallel_rounds(
+      rounds_on_a_team_of_their_own(
           10, threads, busy,
           [&](int k, int) {
             if (round == 4 && (k == 3 || k == 8)) throw std::runtime_error("slot " + std::to_string(k));
@@ -63,7 +68,7 @@ TEST(parallel_test, a_failing_between_stops_the_team_and_is_rethrown) {
   for (const int threads : {1, 2}) {
     int round = 0;
     std::vector<double> busy;
-    EXPECT_THROW(aco::detail::parallel_rounds(
+    EXPECT_THROW(rounds_on_a_team_of_their_own(
                      4, threads, busy, [](int, int) {},
                      [&]() -> bool {
                        if (++round == 3) throw std::logic_error("between");

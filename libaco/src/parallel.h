@@ -25,6 +25,7 @@
 #include <chrono>
 #include <condition_variable>
 #include <exception>
+#include <functional>
 #include <mutex>
 #include <vector>
 
@@ -194,7 +195,7 @@ class Team {
         }
         busy_s[static_cast<std::size_t>(me)] += busy;
       };
-      Job job{&work, [](void* w, int me) { (*static_cast<decltype(work)*>(w))(me); }};
+      const Job job = work;
       job_.store(&job);
       posted_jobs_.fetch_add(1);
       posted_.notify();
@@ -211,10 +212,7 @@ class Team {
   }
 
  private:
-  struct Job {
-    void* work;
-    void (*call)(void*, int);
-  };
+  using Job = std::function<void(int)>;  // a worker's part in rounds(), given its number
   explicit Team(int threads) : threads_(threads) {}
   void serve(int me) {
     unsigned seen = 0;
@@ -226,7 +224,7 @@ class Team {
       // under way is joined; one that has stopped returns at once.
       inside_.fetch_add(1);
       const Job* job = job_.load();
-      if (job != nullptr) job->call(job->work, me);
+      if (job != nullptr) (*job)(me);
       inside_.fetch_sub(1);
     }
   }
@@ -237,11 +235,5 @@ class Team {
   std::atomic<bool> closed_{false};
   Signal posted_;
 };
-
-// Rounds on a team of their own (see Team::rounds).
-template <class Body, class Between>
-void parallel_rounds(int count, int threads, std::vector<double>& busy_s, Body&& body, Between&& between) {
-  Team::run(threads, [&](Team& team) { team.rounds(count, busy_s, body, between); });
-}
 
 }  // namespace aco::detail
