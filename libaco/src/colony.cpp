@@ -834,11 +834,16 @@ Solution Colony::run() {
     if (focused) {
       ++ref_stall_;
       const bool better = ib_len < ref_len_ - 1e-9;
-      // Not on routes of kFullListLimit holes or fewer: there the kicks
-      // measured worse (1-2 s, 5 seeds, median gap without -> with: d493
-      // 0.02 -> 0.26 %, u574 0.00 -> 0.11 %, d657 0.07 -> 0.14 %, u724 0.09 ->
-      // 0.01 %), and pcb442 found its optimum with all 5 seeds either way.
-      const bool walk = n_ > kFullListLimit && ref_stall_ >= kKickAfter;
+      // On routes of any length. Up to kFullListLimit holes there were no
+      // kicks while the search's deeper steps were 2-opt steps: then they
+      // measured worse (d493 0.02 -> 0.26 %, u574 0.00 -> 0.11 %, d657 0.07 ->
+      // 0.14 %). Since those steps are whole 3-opt steps they measure better
+      // (2 threads, 10 seeds, median gap without -> with, at 1 s: d493 0.11 ->
+      // 0.015 % (0.017 -> 0.019 % over seeds 11-30: half the seeds stay at
+      // 0.20-0.24 % either way), u574 0.00 -> 0.00 % (3 seeds above 0 -> 2);
+      // at 2 s: d657 0.105 -> 0.080 %, u724 0.095 -> 0.033 %), and pcb442
+      // and d198 found their optimum with all 10 seeds either way.
+      const bool walk = ref_stall_ >= kKickAfter;
       if (ib_plateau && (better || ib_len <= ref_len_ + 1e-9)) {
         // The reference moves to the iteration's best when it is better or as
         // good (across a plateau), but not when that is R itself from another
