@@ -182,7 +182,7 @@ def main():
           "drill) keep their input order, so boards whose holes are mostly drilled slots have little to gain.\n")
         w("| program | holes | overlapping | input mm | reordered mm (median) | saved % (median) | min..max % | wall s |")
         w("|---|---:|---:|---:|---:|---:|---|---:|")
-        names = sorted({r["program"] for r in runs}, key=lambda n: -int(next(r["holes"] for r in runs if r["program"] == n)))
+        names = sorted({r["program"] for r in runs}, key=lambda n: (-int(next(r["holes"] for r in runs if r["program"] == n)), n))
         for n in names:
             rr = [r for r in runs if r["program"] == n]
             saved = [float(r["saved_pct"]) for r in rr]
