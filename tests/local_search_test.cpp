@@ -238,7 +238,8 @@ aco::Problem lattice_with_pile() {
 
 TEST(local_search_test, candidate_rows_are_the_same_on_any_thread_count) {
   // On several threads each step's tree is grown in parts and joined (one
-  // strip of holes a thread): the same tree, so the same rows.
+  // strip of holes a thread, each joined to the next by the chains of its
+  // forest): the same tree, so the same rows.
   for (const int layout : {0, 1, 2}) {
     const aco::Problem p = layout == 2 ? lattice_with_pile() : random_problem(3000, 11, aco::Shape::ClosedTour, layout == 1);
     const aco::detail::Space space(p);
@@ -249,7 +250,7 @@ TEST(local_search_test, candidate_rows_are_the_same_on_any_thread_count) {
       };
       const aco::detail::Candidates nearest = neighbours(1);
       const aco::detail::Candidates alpha = aco::detail::alpha_candidates(space, nearest, 5, 30, 1);
-      for (const int threads : {2, 3}) {
+      for (const int threads : {2, 3, 5}) {
         SCOPED_TRACE(::testing::Message() << threads << " threads, layout " << layout << ", joined " << joined);
         const aco::detail::Candidates nearest_t = neighbours(threads);
         EXPECT_EQ(nearest_t.list, nearest.list);
