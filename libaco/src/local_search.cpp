@@ -98,8 +98,39 @@ bool LocalSearcher::try_two_opt(HoleIndex a) {
   return false;
 }
 
+void LocalSearcher::reverse_path(HoleIndex a, HoleIndex b) {
+  const std::size_t pa = pos_[a], pb = pos_[b];
+  reverse(std::min(pa, pb) - 1, std::max(pa, pb));
+}
+
 void LocalSearcher::move_segment(std::size_t s, std::size_t len, std::size_t q, bool reversed) {
   // Moves route_[s..s+len-1] to sit between positions q and q+1 (q outside the segment).
+  // The holes between (X) are shifted by len: O(|X|), and a hole's nearest
+  // neighbours lie anywhere along a route (on 100 000 holes 1 move in 8 shifted
+  // more than a quarter of it, and those were 98 % of the shifting). On a
+  // closed tour the move is also three reversals, each of the shorter side:
+  // S -> S^r unless it goes in reversed, then [S^r X] -> X^r S, X^r -> X.
+  const std::size_t x_len = q > s ? q + 1 - s - len : s - q - 1;
+  if (!space_.open() && !windowed_ && m_ >= 16) {
+    const std::size_t whole = x_len + len;
+    const std::size_t by_reversals = std::min(whole, m_ - whole) + std::min(x_len, m_ - x_len) + len;
+    if (by_reversals < whole) {
+      const HoleIndex x_first = q > s ? route_[s + len] : route_[q + 1];
+      const HoleIndex x_last = q > s ? route_[q] : route_[s - 1];
+      // S (at most 3 holes of 16 or more) is reversed in place; the stretch
+      // S X (or X S) then starts after position 0, which try_or_opt never
+      // moves, and after it X is one stretch after position 0, whichever side
+      // was reversed.
+      if (!reversed) reverse(s - 1, s + len - 1);
+      if (q > s) {
+        reverse(s - 1, q);
+      } else {
+        reverse(q, s + len - 1);
+      }
+      reverse_path(x_first, x_last);
+      return;
+    }
+  }
   std::size_t lo, hi;
   if (q > s) {
     std::rotate(route_.begin() + s, route_.begin() + s + len, route_.begin() + q + 1);

@@ -109,6 +109,9 @@ class alignas(64) LocalSearcher {
   HoleIndex next(HoleIndex x, int dir) const { return route_[dir == 0 ? succ(pos_[x]) : pred(pos_[x])]; }
   void reverse(std::size_t i, std::size_t j);  // reverse positions i+1..j
   void move_segment(std::size_t s, std::size_t len, std::size_t q, bool reversed);
+  // Reverses the stretch of the route between holes a and b (both ends in it, a
+  // stretch that does not hold position 0), or the rest of the cycle when that is shorter.
+  void reverse_path(HoleIndex a, HoleIndex b);
   void push(HoleIndex node);
   std::size_t succ(std::size_t i) const { return i + 1 == m_ ? 0 : i + 1; }
   std::size_t pred(std::size_t i) const { return i == 0 ? m_ - 1 : i - 1; }
