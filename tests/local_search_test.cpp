@@ -100,12 +100,18 @@ TEST(local_search_test, every_move_set_keeps_a_route_never_lengthens_it_and_ends
         const aco::detail::Space space(p);
         const aco::detail::Candidates cand = aco::detail::build_candidates(space, 8);
         const std::vector<HoleIndex> start = start_route(space, p, seed);
-        for (Moves moves : {Moves::TwoOpt, Moves::OrOpt, Moves::ThreeOpt}) {
+        // Far Or-opt moves by reversals (see kFarShift) on these routes too.
+        for (auto [moves, far_shift] : {std::pair{Moves::TwoOpt, aco::detail::LocalSearcher::kFarShift},
+                                        std::pair{Moves::OrOpt, aco::detail::LocalSearcher::kFarShift},
+                                        std::pair{Moves::OrOpt, std::size_t{0}},
+                                        std::pair{Moves::ThreeOpt, aco::detail::LocalSearcher::kFarShift},
+                                        std::pair{Moves::ThreeOpt, std::size_t{0}}}) {
           SCOPED_TRACE(::testing::Message() << "shape " << int(shape) << " clustered " << clustered << " seed " << seed
-                                            << " moves " << int(moves));
+                                            << " moves " << int(moves) << " far shift " << far_shift);
           std::vector<HoleIndex> route = start;
           aco::detail::LocalSearcher ls(space, cand);
           ls.audit(true);
+          ls.far_shift(far_shift);
           // Don't-look bits are a heuristic: a hole is looked at again only
           // when its own edges change, so a pass can leave a move a later
           // pass finds. Passes are repeated until one changes nothing.
@@ -137,6 +143,7 @@ TEST(local_search_test, three_opt_improves_routes_that_two_opt_and_or_opt_left_a
       std::vector<HoleIndex> route = start_route(space, p, 2);
       aco::detail::LocalSearcher ls(space, cand);
       ls.audit(true);
+      ls.far_shift(0);
       ls.improve(route, Moves::OrOpt);
       const double or_opt = space.route_cost(route);
       ls.improve(route, Moves::ThreeOpt);

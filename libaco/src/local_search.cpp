@@ -106,13 +106,12 @@ void LocalSearcher::reverse_path(HoleIndex a, HoleIndex b) {
 void LocalSearcher::move_segment(std::size_t s, std::size_t len, std::size_t q, bool reversed) {
   // Moves route_[s..s+len-1] to sit between positions q and q+1 (q outside the segment).
   // The holes between (X) are shifted by len: O(|X|), and a hole's nearest
-  // neighbours lie anywhere along a route (on 100 000 holes 1 move in 8 shifted
-  // more than a quarter of it, and those were 98 % of the shifting). On a
-  // closed tour the move is also three reversals, each of the shorter side:
-  // S -> S^r unless it goes in reversed, then [S^r X] -> X^r S, X^r -> X.
+  // neighbours lie anywhere along a route. On a closed tour the move is also
+  // three reversals, each of the shorter side: S -> S^r unless it goes in
+  // reversed, then [S^r X] -> X^r S, X^r -> X; taken for far moves (kFarShift).
   const std::size_t x_len = q > s ? q + 1 - s - len : s - q - 1;
-  if (!space_.open() && !windowed_ && m_ >= 16) {
-    const std::size_t whole = x_len + len;
+  const std::size_t whole = x_len + len;
+  if (!space_.open() && !windowed_ && m_ >= 16 && whole >= far_shift_) {
     const std::size_t by_reversals = std::min(whole, m_ - whole) + std::min(x_len, m_ - x_len) + len;
     if (by_reversals < whole) {
       const HoleIndex x_first = q > s ? route_[s + len] : route_[q + 1];
