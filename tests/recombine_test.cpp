@@ -27,6 +27,16 @@ EdgeSet edges_of(const std::vector<HoleIndex>& route) {
   return e;
 }
 
+// A cycle's weight under an arbitrary symmetric whole-number edge weight.
+long weight_of(const std::vector<HoleIndex>& route) {
+  long w = 0;
+  for (std::size_t i = 0; i < route.size(); ++i) {
+    const Edge e = ordered(route[i], route[(i + 1) % route.size()]);
+    w += static_cast<long>((e.first * 7919u + e.second * 104729u) % 1000u);
+  }
+  return w;
+}
+
 std::vector<std::uint32_t> positions(const std::vector<HoleIndex>& route) {
   std::vector<std::uint32_t> pos(route.size());
   for (std::size_t i = 0; i < route.size(); ++i) pos[route[i]] = static_cast<std::uint32_t>(i);
@@ -108,6 +118,8 @@ TEST(DiffMerger, ExchangesThatShareAHoleAreNotBothApplied) {
 // random route, merged in random order: the result is one cycle over every
 // hole, each exchange is in it whole or not at all, it holds no other edge
 // than R's and the applied ones', and disjoint nested moves all go in.
+// applied() names those exchanges, and their gains add up to the merged
+// route's (what the colony takes as its length before measuring it).
 TEST(DiffMerger, MergedRouteIsOneCycleHoldingWholeExchangesOnly) {
   std::mt19937 rng(11);
   int merged_several = 0;
@@ -119,6 +131,7 @@ TEST(DiffMerger, MergedRouteIsOneCycleHoldingWholeExchangesOnly) {
     const auto pos = positions(ref);
     const int moves = 2 + static_cast<int>(rng() % 8);
     std::vector<RouteDiff> diffs(static_cast<std::size_t>(moves));
+    std::vector<long> gain;  // of each exchange, in whole-number edge weights
     for (RouteDiff& d : diffs) {
       std::vector<HoleIndex> route = ref;
       const std::size_t span = 8 + rng() % 30;
@@ -147,6 +160,7 @@ TEST(DiffMerger, MergedRouteIsOneCycleHoldingWholeExchangesOnly) {
       for (const Edge& e : removed) expected.erase(e);
       for (const Edge& e : added) expected.insert(e);
       ASSERT_EQ(expected, edges_of(route)) << "trial " << trial;
+      gain.push_back(weight_of(route) - weight_of(ref));
     }
     std::vector<const RouteDiff*> order;
     for (const RouteDiff& d : diffs) order.push_back(&d);
@@ -158,19 +172,24 @@ TEST(DiffMerger, MergedRouteIsOneCycleHoldingWholeExchangesOnly) {
     EXPECT_EQ(out[0], ref[0]);
     const EdgeSet got = edges_of(out);
     EdgeSet expected = edges_of(ref);
-    std::size_t whole = 0;
-    for (const RouteDiff& d : diffs) {
+    std::vector<std::size_t> whole_ones;
+    for (std::size_t i = 0; i < diffs.size(); ++i) {
+      const RouteDiff& d = diffs[i];
       const std::size_t in = static_cast<std::size_t>(
           std::count_if(d.added.begin(), d.added.end(), [&](const Edge& e) { return got.count(e) > 0; }));
       const bool removed_all = std::none_of(d.removed.begin(), d.removed.end(), [&](const Edge& e) { return got.count(e) > 0; });
       if (in == d.added.size() && removed_all && !d.added.empty()) {
-        ++whole;
+        whole_ones.push_back(i);
         for (const Edge& e : d.removed) expected.erase(e);
         for (const Edge& e : d.added) expected.insert(e);
       }
     }
-    EXPECT_EQ(whole, applied) << "trial " << trial;
+    EXPECT_EQ(whole_ones.size(), applied) << "trial " << trial;
+    EXPECT_EQ(merger.applied(), whole_ones) << "trial " << trial;
     EXPECT_EQ(got, expected) << "trial " << trial;
+    long gains = 0;
+    for (std::size_t i : merger.applied()) gains += gain[i];
+    EXPECT_EQ(weight_of(out) - weight_of(ref), gains) << "trial " << trial;
     merged_several += applied >= 2;
   }
   EXPECT_GT(merged_several, 100);  // the test is about merging, not about skipping

@@ -68,9 +68,10 @@ std::size_t DiffMerger::merge(const std::vector<HoleIndex>& ref, const std::vect
   }
   removed_.clear();
   added_.clear();
-  std::size_t applied = 0;
+  applied_.clear();
   bool current = true;  // whether one_cycle's state (order_) is that of the exchanges applied
-  for (const RouteDiff* d : diffs) {
+  for (std::size_t i = 0; i < diffs.size(); ++i) {
+    const RouteDiff* d = diffs[i];
     if (d->removed.empty() || d->removed.size() != d->added.size()) continue;
     bool disjoint = true;
     for (const auto* edges : {&d->removed, &d->added}) {
@@ -87,13 +88,13 @@ std::size_t DiffMerger::merge(const std::vector<HoleIndex>& ref, const std::vect
       continue;
     }
     for (const Edge& e : d->removed) mark_[e.first] = mark_[e.second] = stamp_;
-    ++applied;
+    applied_.push_back(i);
   }
-  if (applied > 0) {
+  if (!applied_.empty()) {
     if (!current) one_cycle(ref, ref_pos);  // the last one tried was left out
     build(ref, first_next, out);
   }
-  return applied;
+  return applied_.size();
 }
 
 bool DiffMerger::one_cycle(const std::vector<HoleIndex>& ref, const std::vector<std::uint32_t>& ref_pos) {

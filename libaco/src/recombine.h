@@ -40,6 +40,8 @@ class DiffMerger {
   // and returns how many exchanges it applied.
   std::size_t merge(const std::vector<HoleIndex>& ref, const std::vector<std::uint32_t>& ref_pos,
                     const std::vector<const RouteDiff*>& diffs, HoleIndex first_next, std::vector<HoleIndex>& out);
+  // Which of the last merge's diffs it applied (their indices, in order).
+  const std::vector<std::size_t>& applied() const { return applied_; }
 
  private:
   // Whether R minus `removed_` plus `added_` is one cycle; if so and `build`,
@@ -48,6 +50,7 @@ class DiffMerger {
   void build(const std::vector<HoleIndex>& ref, HoleIndex first_next, std::vector<HoleIndex>& out);
 
   std::vector<Edge> removed_, added_;
+  std::vector<std::size_t> applied_;
   std::vector<std::uint32_t> mark_;  // by stamp: holes an applied exchange touched
   std::uint32_t stamp_ = 0;
   // one_cycle's working state: cut positions, segment ends and their links.
