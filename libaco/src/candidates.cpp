@@ -67,7 +67,6 @@ class SpanningForest {
   struct Edge {
     HoleIndex a, b;  // a < b
     double length;
-    double cost = 0.0;  // of a tree edge: length + pi[a] + pi[b] at the last grow()
   };
   SpanningForest(std::vector<Edge> edges, HoleIndex holes)
       : edges_(std::move(edges)), n_(holes), first_arc_(static_cast<std::size_t>(holes) + 1, 0),
@@ -86,17 +85,18 @@ class SpanningForest {
     arc_end_.assign(first_arc_.begin() + 1, first_arc_.end());
     parts_[0].holes.resize(n_);
     std::iota(parts_[0].holes.begin(), parts_[0].holes.end(), HoleIndex{0});
-    parts_[0].size_arrays(n_, false);
+    parts_[0].size_arrays(n_, in_tree_.size(), false);
   }
   const std::vector<Edge>& edges() const { return edges_; }
-  // The forest's edges, by edge index.
+  // The forest's edges, by edge index, and their costs under the last pi.
   const std::vector<std::uint32_t>& tree() const { return tree_; }
+  const std::vector<double>& tree_costs() const { return tree_costs_; }
 
   // From now on the holes are grown in parts (part_of[h] < parts): see grow_part().
   void split(const std::vector<std::uint32_t>& part_of, std::uint32_t parts) {
     parts_.assign(parts, {});
     for (HoleIndex h = 0; h < n_; ++h) parts_[part_of[h]].holes.push_back(h);
-    for (Part& part : parts_) part.size_arrays(n_, true);
+    for (Part& part : parts_) part.size_arrays(n_, in_tree_.size(), true);
     // Each hole's arcs inside its part first, and its part's Prim reads only
     // those. (Which forest Prim grows, and in what order, does not depend on
     // the order it reads a hole's arcs in: an offer is the least of them.)
@@ -134,21 +134,21 @@ class SpanningForest {
   }
 
   // Once every part has grown under `pi`: the forest, and its cost summed by
-  // edge index (the same bits however it was grown); the tree's edges' `cost`
-  // is then up to date.
+  // edge index (the same bits however it was grown).
   double join(const std::vector<double>& pi) {
     for (const Part& part : parts_) {
-      for (auto [c, e] : part.grown) mark(e);
+      for (std::size_t word = 0; word < in_tree_.size(); ++word) in_tree_[word] |= part.grown_bits[word];
     }
     if (parts_.size() > 1) join_parts();
     tree_.clear();
+    tree_costs_.clear();
     double total = 0.0;
     for (std::size_t word = 0; word < in_tree_.size(); ++word) {
       for (std::uint64_t bits = in_tree_[word]; bits != 0; bits &= bits - 1) {
         const auto e = static_cast<std::uint32_t>(64 * word + static_cast<std::size_t>(__builtin_ctzll(bits)));
         tree_.push_back(e);
-        edges_[e].cost = cost(e, pi);
-        total += edges_[e].cost;
+        tree_costs_.push_back(cost(e, pi));
+        total += tree_costs_.back();
       }
       in_tree_[word] = 0;
     }
@@ -199,6 +199,11 @@ class SpanningForest {
     std::vector<std::uint32_t> offer_edge, heap_at;
     std::vector<HoleIndex> heap;  // the holes offered an edge, a binary heap by better()
     std::vector<Priced> grown;    // the forest's edges, as taken
+    // The same, a bit by edge index: what join() reads. Reading `grown`
+    // itself took its lines from the core that grew it, and made the join of
+    // a two-thread step 7 times the one-thread join (pcb1173: 33 us a step
+    // against 4.6, of a step of 190 us).
+    std::vector<std::uint64_t> grown_bits;
     std::vector<Priced> between;  // its share of the edges between parts
     // Only when split: the holes in the order spanned (each after the hole
     // it hangs from), and by hole: grown's edge to that hole (kOutside for a
@@ -210,7 +215,8 @@ class SpanningForest {
     std::vector<std::uint8_t> degree;
     std::vector<Chain> chains;
 
-    void size_arrays(HoleIndex n, bool split) {
+    void size_arrays(HoleIndex n, std::size_t edge_words, bool split) {
+      grown_bits.assign(edge_words, 0);
       offer_cost.assign(n, 0.0);
       offer_edge.assign(n, 0);
       heap_at.assign(n, kOutside);
@@ -223,6 +229,7 @@ class SpanningForest {
     void grow(const SpanningForest& f, const std::vector<double>& pi) {
       for (HoleIndex h : holes) offer_cost[h] = std::numeric_limits<double>::infinity();
       grown.clear();
+      std::fill(grown_bits.begin(), grown_bits.end(), 0);
       order.clear();
       const bool split = !via.empty();
       for (HoleIndex root : holes) {
@@ -239,6 +246,7 @@ class SpanningForest {
             order.push_back(h);
           }
           grown.push_back({offer_cost[h], offer_edge[h]});
+          grown_bits[offer_edge[h] / 64] |= std::uint64_t{1} << (offer_edge[h] % 64);
           span(f, h, pi);
         }
       }
@@ -389,7 +397,13 @@ class SpanningForest {
   std::vector<std::uint32_t> first_arc_, arc_end_;
   std::vector<Arc> arcs_;
   std::vector<std::uint64_t> in_tree_;  // a bit by edge, between growing and summing
+  // Written by join() alone, apart from edges_: the parts read edges_ at
+  // every step, and a cost written there took the line from the core that
+  // read it (and gave it back at its next read). That made a two-thread
+  // step's join 7 times the one-thread join (pcb1173: 31 us a step against
+  // 4.3, in a step of 190 us).
   std::vector<std::uint32_t> tree_;
+  std::vector<double> tree_costs_;
   std::vector<Part> parts_;  // one unless split()
   std::vector<HoleIndex> root_;  // after split(): Kruskal's union-find
   std::vector<std::uint8_t> terminal_;  // after split(): whether a hole has an edge to another part
@@ -635,9 +649,10 @@ Candidates alpha_candidates(const Space& space, const Candidates& nearest, int k
   pi = best_pi;
   forest.grow(pi);
   std::vector<std::vector<std::pair<HoleIndex, double>>> tree(n);
-  for (std::uint32_t e : in_tree) {
-    tree[edges[e].a].push_back({edges[e].b, edges[e].cost});
-    tree[edges[e].b].push_back({edges[e].a, edges[e].cost});
+  for (std::size_t t = 0; t < in_tree.size(); ++t) {
+    const SpanningForest::Edge& e = edges[in_tree[t]];
+    tree[e.a].push_back({e.b, forest.tree_costs()[t]});
+    tree[e.b].push_back({e.a, forest.tree_costs()[t]});
   }
   // Root each tree; binary lifting gives the longest edge on any tree path in O(log n).
   int levels = 1;
