@@ -199,10 +199,8 @@ class SpanningForest {
     std::vector<std::uint32_t> offer_edge, heap_at;
     std::vector<HoleIndex> heap;  // the holes offered an edge, a binary heap by better()
     std::vector<Priced> grown;    // the forest's edges, as taken
-    // The same, a bit by edge index: what join() reads. Reading `grown`
-    // itself took its lines from the core that grew it, and made the join of
-    // a two-thread step 7 times the one-thread join (pcb1173: 33 us a step
-    // against 4.6, of a step of 190 us).
+    // The same, a bit by edge index: what join() reads, a sixth of the
+    // lines of `grown` to take from the core that grew it.
     std::vector<std::uint64_t> grown_bits;
     std::vector<Priced> between;  // its share of the edges between parts
     // Only when split: the holes in the order spanned (each after the hole
