@@ -47,6 +47,7 @@ class Space {
   Point2 start() const { return start_; }
 
   double d(HoleIndex a, HoleIndex b) const { return distance(metric_, pts_[a], pts_[b]); }
+  double d(const Point2& a, const Point2& b) const { return distance(metric_, a, b); }
 
   // Cost of the directed edge a → b, where either may be V.
   double e(HoleIndex a, HoleIndex b) const {
