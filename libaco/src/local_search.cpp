@@ -373,8 +373,10 @@ bool LocalSearcher::deepen(HoleIndex t1, Step step) {
   return false;
 }
 
-void LocalSearcher::load(const std::vector<HoleIndex>& route) {
-  route_.assign(route.begin(), route.end());
+void LocalSearcher::load(std::vector<HoleIndex>& route) {
+  // Taken, not copied, and given back by unload(): two copies of the route
+  // an ant, 0.4 MB each at 100 000 holes.
+  route_.swap(route);
   for (std::size_t i = 0; i < m_; ++i) pos_[route_[i]] = i;
 }
 
@@ -410,8 +412,10 @@ void LocalSearcher::improve(std::vector<HoleIndex>& route, Moves moves) {
       if (hi_ == m_ - 1) break;
     }
   }
-  route.assign(route_.begin(), route_.end());
+  unload(route);
 }
+
+void LocalSearcher::unload(std::vector<HoleIndex>& route) { route.swap(route_); }
 
 void LocalSearcher::improve_from(std::vector<HoleIndex>& route, Moves moves, const std::vector<HoleIndex>& seeds) {
   m_ = route.size();
@@ -421,7 +425,7 @@ void LocalSearcher::improve_from(std::vector<HoleIndex>& route, Moves moves, con
   // Whole-route search: a focused ant makes few moves, so even at a million
   // holes the O(n) reversal of a few of them costs less than windows would.
   search_whole_route_from(seeds.data(), seeds.data() + seeds.size(), moves);
-  route.assign(route_.begin(), route_.end());
+  unload(route);
 }
 
 void LocalSearcher::run_queue(Moves moves) {

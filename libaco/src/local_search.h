@@ -65,7 +65,8 @@ class alignas(64) LocalSearcher {
   std::size_t audited_searches() const { return audited_searches_; }
 
  private:
-  void load(const std::vector<HoleIndex>& route);  // route_ and pos_ from `route` (m_ set)
+  void load(std::vector<HoleIndex>& route);    // route_ (taken from `route`) and pos_ (m_ set)
+  void unload(std::vector<HoleIndex>& route);  // gives route_ back to `route`
   void search_whole_route_from(const HoleIndex* first, const HoleIndex* last, Moves moves);
   void run_queue(Moves moves);
   bool in_window(std::size_t position) const { return position >= lo_ && position <= hi_; }
