@@ -168,6 +168,24 @@ TEST(solver_test, same_seed_same_tour_on_any_thread_count_with_3opt_and_alpha_ca
   }
 }
 
+TEST(solver_test, from_16384_holes_the_route_is_of_the_input_holes_on_any_thread_count) {
+  // There the colony numbers the holes along a Hilbert curve (hilbert.h) and
+  // solve() gives the route back in the input's numbers.
+  aco::Problem p = random_problem(17000, 13, aco::Shape::OpenPath);
+  p.start = {0, 0};
+  aco::Params params = quick(aco::Algorithm::FocusedAcs, aco::LocalSearch::ThreeOpt);
+  params.iterations = 3;
+  params.threads = 1;
+  const aco::Solution one = aco::solve(p, params);
+  ASSERT_TRUE(aco::is_permutation_of(p, one.order));
+  EXPECT_NEAR(one.length, aco::route_length(p, one.order), 1e-9 * one.length);
+  // An open path from the start: its first hole is near it, not hole 0 or the curve's first.
+  EXPECT_LT(std::hypot(p.points[one.order[0]].x - p.start.x, p.points[one.order[0]].y - p.start.y), 100.0);
+  EXPECT_LT(one.length, aco::route_length(p, aco::nearest_neighbor(p)));
+  params.threads = 2;
+  EXPECT_EQ(aco::solve(p, params).order, one.order);
+}
+
 TEST(solver_test, thread_busy_time_is_recorded_per_thread) {
   aco::Problem p = random_problem(200, 1);
   aco::Params params = quick(aco::Algorithm::MaxMinAntSystem);

@@ -1,0 +1,62 @@
+#pragma once
+// Holes in the order a Hilbert curve through their bounding square passes
+// them. Holes near each other in that order are near each other on the
+// plate, so when the solver numbers them that way, what it reads about a
+// hole's neighbours (their points, rows, trail, places in the route) lies
+// near in memory too.
+#include <algorithm>
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "aco/geometry.h"
+
+namespace aco::detail {
+
+// The curve runs through a grid of kHilbertCells x kHilbertCells cells.
+constexpr std::uint32_t kHilbertCells = 1u << 16;
+
+// How far along the curve cell (x, y) lies (Hilbert 1891; the iterative form
+// of Warren's "Hacker's Delight", 2nd ed., section 16-2).
+inline std::uint64_t hilbert_index(std::uint32_t x, std::uint32_t y) {
+  std::uint64_t d = 0;
+  for (std::uint32_t s = kHilbertCells / 2; s > 0; s /= 2) {
+    const std::uint32_t rx = (x & s) != 0 ? 1 : 0;
+    const std::uint32_t ry = (y & s) != 0 ? 1 : 0;
+    d += std::uint64_t{s} * s * ((3 * rx) ^ ry);
+    if (ry == 0) {  // the quadrant's curve is turned: turn the point with it
+      if (rx == 1) {
+        x = kHilbertCells - 1 - x;
+        y = kHilbertCells - 1 - y;
+      }
+      std::swap(x, y);
+    }
+  }
+  return d;
+}
+
+// The indices of `points` in curve order; points in one cell by index, so
+// the order depends on the points alone.
+inline std::vector<HoleIndex> hilbert_order(const std::vector<Point2>& points) {
+  std::vector<HoleIndex> order(points.size());
+  if (points.empty()) return order;
+  Point2 lo = points[0], hi = points[0];
+  for (const Point2& p : points) {
+    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
+    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
+  }
+  const double span = std::max(hi.x - lo.x, hi.y - lo.y);
+  const double per_unit = span > 0.0 ? (kHilbertCells - 1) / span : 0.0;
+  auto cell = [&](double v, double from) {
+    return static_cast<std::uint32_t>(std::min<double>(kHilbertCells - 1, (v - from) * per_unit));
+  };
+  std::vector<std::pair<std::uint64_t, HoleIndex>> keyed(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    keyed[i] = {hilbert_index(cell(points[i].x, lo.x), cell(points[i].y, lo.y)), static_cast<HoleIndex>(i)};
+  }
+  std::sort(keyed.begin(), keyed.end());
+  for (std::size_t i = 0; i < keyed.size(); ++i) order[i] = keyed[i].second;
+  return order;
+}
+
+}  // namespace aco::detail
