@@ -50,7 +50,7 @@ using detail::Space;
 // Up to this many holes the candidate list is every other hole (the exact Ant System).
 constexpr std::size_t kFullListLimit = 800;
 // How far ahead the serial update's passes over a whole route ask for the
-// holes they will read: in route order those are scattered over memory.
+// holes they will read: in route order those may lie anywhere in memory.
 constexpr std::size_t kPrefetchAhead = 16;
 
 // With local search, above kFullListLimit, the candidates are the
@@ -832,8 +832,8 @@ Solution Colony::run() {
     // exactly, with real ones it may differ in the last bits. The decisions
     // below take it as it is; best lengths must be exact, and a route that
     // becomes the reference is measured in full by set_reference(), which sums
-    // its edges anyway. A full measure besides, as before, cost as much as an
-    // ant at 100 000 holes, 1.2 ms of the 2.6 ms serial part of an iteration.
+    // its edges anyway. Measuring it besides, as before, cost as much as an
+    // ant at 100 000 holes: 1.2 ms of the 2.6 ms serial part of an iteration.
     double ib_len = work[ib].length;
     bool ib_measured = !focused;  // whether ib_len is ib_route's length summed in full
     const bool ib_plateau = focused && ib_len <= ref_len_ + 1e-6 && !is_reference(*ib_route);
@@ -1121,8 +1121,6 @@ Solution solve(const Problem& problem, const Params& params) {
     s.trace.push_back({0, 0.0, s.length});
     return s;
   }
-  // One team for the whole solve: the candidate lists' rows and ascent and
-  // the iterations all run on it, and a worker that starts late is never waited for.
   const Clock started;
   Problem numbered;
   std::vector<HoleIndex> input_index;  // by the colony's hole number: the hole's index in problem.points
@@ -1131,6 +1129,8 @@ Solution solve(const Problem& problem, const Params& params) {
     numbered = problem;
     for (std::size_t i = 0; i < n; ++i) numbered.points[i] = problem.points[input_index[i]];
   }
+  // One team for the whole solve: the candidate lists' rows and ascent and
+  // the iterations all run on it, and a worker that starts late is never waited for.
   Solution solution;
   detail::Team::run(p.threads, [&](detail::Team& team) {
     Colony colony(input_index.empty() ? problem : numbered, p, team, started);
