@@ -63,6 +63,19 @@ TEST(Hilbert, OrderOfAShuffledGridIsAShortPathThroughEveryPoint) {
   EXPECT_LT(path_length(points, order), 1.05 * shortest);
 }
 
+TEST(Hilbert, StretchTellsAnOrderThatFollowsThePlateFromOneThatJumpsAbout) {
+  std::vector<Point2> rows;  // 128 rows of 128 holes, row by row
+  for (int y = 0; y < 128; ++y) {
+    for (int x = 0; x < 128; ++x) rows.push_back({2.54 * x, 2.54 * y});
+  }
+  const double in_rows = aco::detail::order_stretch(rows, aco::detail::hilbert_order(rows));
+  EXPECT_GT(in_rows, 1.0);  // each row's end jumps back across the plate
+  EXPECT_LT(in_rows, 2.0);
+  std::vector<Point2> shuffled = rows;
+  std::shuffle(shuffled.begin(), shuffled.end(), std::mt19937(9));
+  EXPECT_GT(aco::detail::order_stretch(shuffled, aco::detail::hilbert_order(shuffled)), 20.0);
+}
+
 TEST(Hilbert, PointsInOneCellKeepTheirInputOrder) {
   const std::vector<Point2> same(5, Point2{3.0, 4.0});
   EXPECT_EQ(aco::detail::hilbert_order(same), (std::vector<HoleIndex>{0, 1, 2, 3, 4}));

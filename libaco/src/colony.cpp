@@ -113,15 +113,22 @@ constexpr std::size_t kReinforceHoles = 10000;
 // measured worse (0.257 0.196 0.248 % with, 0.142 0.131 0.187 % without),
 // on pcb3038 the same (0.110 % at 15 s), on 100 000 holes far better.
 constexpr std::size_t kManyAntsFrom = 10000;
-// From this many holes solve() numbers them along a Hilbert curve
-// (hilbert.h) and the colony works on those numbers. In input order the
-// holes of a route, and a hole's neighbours, lie all over memory: 100 000
-// uniform holes given in random order (E100k, 30 s, 2 threads, seeds 1 and
-// 2) ran 5623 and 5450 iterations, the same holes in curve order 7795 and
-// 6529, to shorter routes. d15112, whose TSPLIB order already follows the
-// plate, gained 4 % (8035 -> 8333 iterations at 20 s), and below this size
-// the numbering stays as given, so routes up to it are as they were.
+// From this many holes, given in an order that jumps about the plate (a path
+// through them in input order more than kJumpyOrder times as long as along
+// the curve), solve() numbers them along a Hilbert curve (hilbert.h) and the
+// colony works on those numbers. In such an order the holes of a route, and
+// a hole's neighbours, lie all over memory: 100 000 uniform holes given in
+// random order (E100k, 30 s, 2 threads, seeds 1 and 2; 168 times as long)
+// ran 5623 and 5450 iterations, the same holes in curve order 7795 and 6529,
+// to shorter routes. d15112 (53 times) gained 4 % (8035 -> 8333 iterations
+// at 20 s), and below kCurveOrderFrom the numbering stays as given, so routes
+// up to it are as they were. An input that follows the plate already keeps
+// its numbers: where distances tie, as on a grid, the numbers break the
+// ties, and on the million-hole panel of bench/make_panel.py (1.85 times)
+// curve numbers made the first route 4.9 % longer (nearest neighbour, then
+// local search in windows), still 0.3 % after 40 s.
 constexpr std::size_t kCurveOrderFrom = 16384;
+constexpr double kJumpyOrder = 4.0;
 constexpr int kRestartAfter = 300;
 constexpr int kRestartKicks = 200;
 
@@ -1124,8 +1131,9 @@ Solution solve(const Problem& problem, const Params& params) {
   const Clock started;
   Problem numbered;
   std::vector<HoleIndex> input_index;  // by the colony's hole number: the hole's index in problem.points
-  if (n >= kCurveOrderFrom) {
-    input_index = detail::hilbert_order(problem.points);
+  if (n >= kCurveOrderFrom) input_index = detail::hilbert_order(problem.points);
+  if (!input_index.empty() && detail::order_stretch(problem.points, input_index) <= kJumpyOrder) input_index.clear();
+  if (!input_index.empty()) {
     numbered = problem;
     for (std::size_t i = 0; i < n; ++i) numbered.points[i] = problem.points[input_index[i]];
   }
