@@ -17,8 +17,9 @@ namespace aco::detail {
 // The curve runs through a grid of kHilbertCells x kHilbertCells cells.
 constexpr std::uint32_t kHilbertCells = 1u << 16;
 
-// How far along the curve cell (x, y) lies (Hilbert 1891; the iterative form
-// of Warren's "Hacker's Delight", 2nd ed., section 16-2).
+// How far along the curve cell (x, y) lies (Hilbert 1891), in the usual
+// iterative form: a quadrant at a time, from the largest, turning the point
+// with the quadrant's curve.
 inline std::uint64_t hilbert_index(std::uint32_t x, std::uint32_t y) {
   std::uint64_t d = 0;
   for (std::uint32_t s = kHilbertCells / 2; s > 0; s /= 2) {
