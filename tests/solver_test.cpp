@@ -169,8 +169,9 @@ TEST(solver_test, same_seed_same_tour_on_any_thread_count_with_3opt_and_alpha_ca
 }
 
 TEST(solver_test, from_16384_holes_the_route_is_of_the_input_holes_on_any_thread_count) {
-  // There the colony numbers the holes along a Hilbert curve (hilbert.h) and
-  // solve() gives the route back in the input's numbers.
+  // Random holes jump about the plate in input order: there the colony
+  // numbers them along a Hilbert curve (hilbert.h) and solve() gives the
+  // route back in the input's numbers.
   aco::Problem p = random_problem(17000, 13, aco::Shape::OpenPath);
   p.start = {0, 0};
   aco::Params params = quick(aco::Algorithm::FocusedAcs, aco::LocalSearch::ThreeOpt);
