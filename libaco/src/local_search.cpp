@@ -43,8 +43,8 @@ void LocalSearcher::reverse(std::size_t i, std::size_t j) {
     r = i;
     for (std::size_t s = 0; s < outer / 2; ++s) {
       std::swap(route_[l], route_[r]);
-      pos_[route_[l]] = l;
-      pos_[route_[r]] = r;
+      pos_[route_[l]] = static_cast<std::uint32_t>(l);
+      pos_[route_[r]] = static_cast<std::uint32_t>(r);
       l = succ(l);
       r = pred(r);
     }
@@ -52,8 +52,8 @@ void LocalSearcher::reverse(std::size_t i, std::size_t j) {
   }
   while (l < r) {
     std::swap(route_[l], route_[r]);
-    pos_[route_[l]] = l;
-    pos_[route_[r]] = r;
+    pos_[route_[l]] = static_cast<std::uint32_t>(l);
+    pos_[route_[r]] = static_cast<std::uint32_t>(r);
     ++l;
     --r;
   }
@@ -142,7 +142,7 @@ void LocalSearcher::move_segment(std::size_t s, std::size_t len, std::size_t q, 
     lo = q + 1;
     hi = s + len - 1;
   }
-  for (std::size_t k = lo; k <= hi; ++k) pos_[route_[k]] = k;
+  for (std::size_t k = lo; k <= hi; ++k) pos_[route_[k]] = static_cast<std::uint32_t>(k);
 }
 
 bool LocalSearcher::try_or_opt(HoleIndex a) {
@@ -377,7 +377,7 @@ void LocalSearcher::load(std::vector<HoleIndex>& route) {
   // Taken, not copied, and given back by unload(): two copies of the route
   // an ant, 0.4 MB each at 100 000 holes.
   route_.swap(route);
-  for (std::size_t i = 0; i < m_; ++i) pos_[route_[i]] = i;
+  for (std::size_t i = 0; i < m_; ++i) pos_[route_[i]] = static_cast<std::uint32_t>(i);
 }
 
 void LocalSearcher::search_whole_route_from(const HoleIndex* first, const HoleIndex* last, Moves moves) {

@@ -5,6 +5,7 @@
 // position 0 never moves, so an open path's virtual node V keeps its place and
 // its direction-dependent edges stay right.
 #include <array>
+#include <cstdint>
 #include <vector>
 
 #include "candidates.h"
@@ -134,7 +135,7 @@ class alignas(64) LocalSearcher {
   const Space& space_;
   const Candidates& cand_;
   std::vector<HoleIndex> route_;
-  std::vector<std::size_t> pos_;
+  std::vector<std::uint32_t> pos_;  // 4 bytes a hole: at 10^5 holes the searcher's hot data fits the cache better
   std::vector<std::array<HoleIndex, 4>> flips_;  // deepen's flips, to undo
   std::vector<HoleIndex> queue_;
   std::vector<char> queued_;
