@@ -40,6 +40,11 @@ class alignas(64) LocalSearcher {
   // The same, looking only where something changed: the queue starts with
   // `seeds` (the ends of an ant's new edges) and grows only where moves are
   // made, so the search costs what the ant changed, plus O(n) to load the route.
+  // That O(n) was measured against holding an ant's route as runs of the
+  // reference instead (a segment list over it: nothing loaded, a flip costing
+  // the runs it touches). The runs lost: 2.2 times fewer iterations on
+  // 29 588 holes, 2.4 on 100 000 (30 s, 2 threads). Each neighbour look-up
+  // took four dependent loads against two, and a flip about 1 us.
   void improve_from(std::vector<HoleIndex>& route, Moves moves, const std::vector<HoleIndex>& seeds);
   static constexpr std::size_t kWindow = 100000;
   // How much shorter the last improve or improve_from made the route: the
