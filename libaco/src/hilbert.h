@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "aco/geometry.h"
+#include "space.h"
 
 namespace aco::detail {
 
@@ -42,11 +43,7 @@ inline std::uint64_t hilbert_index(std::uint32_t x, std::uint32_t y) {
 inline std::vector<HoleIndex> hilbert_order(const std::vector<Point2>& points) {
   std::vector<HoleIndex> order(points.size());
   if (points.empty()) return order;
-  Point2 lo = points[0], hi = points[0];
-  for (const Point2& p : points) {
-    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
-    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
-  }
+  const auto [lo, hi] = bounding_box(points);
   const double span = std::max(hi.x - lo.x, hi.y - lo.y);
   const double per_unit = span > 0.0 ? (kHilbertCells - 1) / span : 0.0;
   auto cell = [&](double v, double from) {

@@ -15,6 +15,19 @@
 
 namespace aco::detail {
 
+// The points' bounding box: its lower-left and upper-right corners (the
+// origin twice when there are none).
+inline std::pair<Point2, Point2> bounding_box(const std::vector<Point2>& points) {
+  if (points.empty()) return {};
+  const double inf = std::numeric_limits<double>::infinity();
+  Point2 lo{inf, inf}, hi{-inf, -inf};
+  for (const Point2& q : points) {
+    lo = {std::min(lo.x, q.x), std::min(lo.y, q.y)};
+    hi = {std::max(hi.x, q.x), std::max(hi.y, q.y)};
+  }
+  return {lo, hi};
+}
+
 class Space {
  public:
   explicit Space(const Problem& p)
@@ -32,18 +45,8 @@ class Space {
   // Array length of a route: the holes, plus V for an open path.
   HoleIndex route_size() const { return open_ ? n_ + 1 : n_; }
   const Point2& point(HoleIndex i) const { return pts_[i]; }
-  // The holes' bounding box: its lower-left and upper-right corners (the
-  // origin twice when there are none).
-  std::pair<Point2, Point2> bounds() const {
-    if (n_ == 0) return {};
-    const double inf = std::numeric_limits<double>::infinity();
-    Point2 lo{inf, inf}, hi{-inf, -inf};
-    for (const Point2& q : pts_) {
-      lo = {std::min(lo.x, q.x), std::min(lo.y, q.y)};
-      hi = {std::max(hi.x, q.x), std::max(hi.y, q.y)};
-    }
-    return {lo, hi};
-  }
+  // The holes' bounding box (bounding_box()).
+  std::pair<Point2, Point2> bounds() const { return bounding_box(pts_); }
   Point2 start() const { return start_; }
 
   double d(HoleIndex a, HoleIndex b) const { return distance(metric_, pts_[a], pts_[b]); }
