@@ -14,6 +14,7 @@
 #include "aco/baselines.h"
 #include "candidates.h"
 #include "local_search.h"
+#include "recombine.h"
 #include "space.h"
 
 namespace {
@@ -128,6 +129,55 @@ TEST(local_search_test, every_move_set_keeps_a_route_never_lengthens_it_and_ends
           EXPECT_LE(best_two_opt_gain(space, cand, route), 1e-6);
         }
       }
+    }
+  }
+}
+
+// An ant's exchange against the reference, read only at the holes its search
+// was given or changed edges at (what the colony does above 10 000 holes),
+// against the same exchange read from a pass over the whole route.
+TEST(local_search_test, an_ants_exchange_read_where_its_search_looked_is_the_whole_routes) {
+  for (auto shape : {aco::Shape::ClosedTour, aco::Shape::OpenPath}) {
+    for (bool clustered : {false, true}) {
+      const aco::Problem p = random_problem(3000, clustered ? 5u : 6u, shape, clustered);
+      const aco::detail::Space space(p);
+      const aco::detail::Candidates cand = aco::detail::build_candidates(space, 8);
+      aco::detail::LocalSearcher ls(space, cand);
+      // A 2-opt optimum, so the ants' 3-opt searches find more to change.
+      std::vector<HoleIndex> ref = start_route(space, p, 2);
+      ls.improve(ref, Moves::TwoOpt);
+      std::vector<std::uint32_t> ref_pos(ref.size());
+      for (std::size_t i = 0; i < ref.size(); ++i) ref_pos[ref[i]] = static_cast<std::uint32_t>(i);
+      std::mt19937 rng(7);
+      int exchanges = 0;
+      for (int trial = 0; trial < 40; ++trial) {
+        // One to three double bridges, each within 60 positions (A B C D ->
+        // A C B D), anywhere along the route.
+        std::vector<HoleIndex> route = ref;
+        std::vector<HoleIndex> seeds;
+        for (int kick = 0; kick < 1 + trial % 3; ++kick) {
+          const std::size_t a = 1 + rng() % (route.size() - 70);
+          std::size_t cut[3] = {a + rng() % 60, a + rng() % 60, a + rng() % 60};
+          std::sort(cut, cut + 3);
+          if (!(cut[0] < cut[1] && cut[1] < cut[2])) continue;
+          std::rotate(route.begin() + static_cast<long>(cut[0] + 1), route.begin() + static_cast<long>(cut[1] + 1),
+                      route.begin() + static_cast<long>(cut[2] + 1));
+          const std::size_t mid = cut[0] + (cut[2] - cut[1]);
+          for (std::size_t q : {cut[0], cut[0] + 1, mid, mid + 1, cut[2], cut[2] + 1}) seeds.push_back(route[q]);
+        }
+        ls.improve_from(route, Moves::ThreeOpt, seeds);
+        expect_route(space, route);
+        aco::detail::RouteDiff whole, near;
+        aco::detail::route_diff(ref, ref_pos, route, whole);
+        if (!whole.added.empty()) ++exchanges;
+        if (seeds.empty()) continue;
+        ASSERT_TRUE(ls.searched_all());
+        aco::detail::route_diff(ref, ref_pos, route, ls.positions(), ls.searched(), near);
+        EXPECT_EQ(near.added, whole.added) << "trial " << trial;
+        EXPECT_EQ(near.removed, whole.removed) << "trial " << trial;
+      }
+      // Most searches end on another route, not back on the reference.
+      EXPECT_GT(exchanges, 20);
     }
   }
 }

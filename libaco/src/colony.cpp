@@ -820,7 +820,13 @@ Solution Colony::run() {
     out.worn_to = w.worn.size();
     // Only where update() merges them (above kManyAntsFrom holes).
     out.improves = focused && n_ > kManyAntsFrom && out.length < ref_len_ - 1e-9;
-    if (out.improves) detail::route_diff(ref_route_, ref_pos_, w.route, out.diff);
+    if (out.improves && use_ls && searchers[static_cast<std::size_t>(worker)].searched_all()) {
+      // Only where the ant or its search changed an edge.
+      const LocalSearcher& ls = searchers[static_cast<std::size_t>(worker)];
+      detail::route_diff(ref_route_, ref_pos_, w.route, ls.positions(), ls.searched(), out.diff);
+    } else if (out.improves) {
+      detail::route_diff(ref_route_, ref_pos_, w.route, out.diff);
+    }
     if (!focused) {
       std::swap(out.route, w.route);
     } else if (w.best_ant < 0 || out.length < w.best_length || (out.length == w.best_length && k < w.best_ant)) {

@@ -420,8 +420,11 @@ void LocalSearcher::unload(std::vector<HoleIndex>& route) { route.swap(route_); 
 void LocalSearcher::improve_from(std::vector<HoleIndex>& route, Moves moves, const std::vector<HoleIndex>& seeds) {
   m_ = route.size();
   gain_ = 0.0;
+  queue_.clear();
+  forgot_ = true;  // searched() says nothing of a route it did not search
   if (m_ < 4 || cand_.k == 0 || seeds.empty()) return;
   load(route);
+  forgot_ = false;
   // Whole-route search: a focused ant makes few moves, so even at a million
   // holes the O(n) reversal of a few of them costs less than windows would.
   search_whole_route_from(seeds.data(), seeds.data() + seeds.size(), moves);
@@ -445,6 +448,7 @@ void LocalSearcher::run_queue(Moves moves) {
         ++failed_audits_;
         queue_.clear();  // a search whose moves lengthen the route may never end
         head_ = 0;
+        forgot_ = true;
         return;
       }
     }
@@ -453,6 +457,7 @@ void LocalSearcher::run_queue(Moves moves) {
     if (head_ > 4096 && head_ * 2 > queue_.size()) {
       queue_.erase(queue_.begin(), queue_.begin() + static_cast<std::ptrdiff_t>(head_));
       head_ = 0;
+      forgot_ = true;
     }
   }
 }

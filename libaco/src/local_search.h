@@ -48,6 +48,14 @@ class alignas(64) LocalSearcher {
   // their splits were a fifth of the perf samples (29 588 holes, 440 an ant).
   void improve_from(std::vector<HoleIndex>& route, Moves moves, const std::vector<HoleIndex>& seeds);
   static constexpr std::size_t kWindow = 100000;
+  // After improve_from, unless it searched so long that its queue forgot
+  // its head (searched_all() false): every hole it was given or whose edges
+  // a move changed (some more than once), so an end of every edge of the
+  // route that the route it was given lacked. And each hole's position in
+  // the route. Valid until the next search.
+  bool searched_all() const { return !forgot_; }
+  const std::vector<HoleIndex>& searched() const { return queue_; }
+  const std::vector<std::uint32_t>& positions() const { return pos_; }
   // How much shorter the last improve or improve_from made the route: the
   // sum of its moves' gains, so a caller need not measure the whole route.
   double gain() const { return gain_; }
@@ -146,6 +154,7 @@ class alignas(64) LocalSearcher {
   std::vector<HoleIndex> queue_;
   std::vector<char> queued_;
   std::size_t head_ = 0;
+  bool forgot_ = false;  // whether queue_ lost holes it held (see searched_all())
   std::size_t m_ = 0;
   std::size_t lo_ = 0, hi_ = 0;  // positions a move may touch
   bool windowed_ = false;

@@ -16,26 +16,27 @@ bool RouteDiff::touches(HoleIndex node) const {
   return false;
 }
 
-void route_diff(const std::vector<HoleIndex>& ref, const std::vector<std::uint32_t>& ref_pos,
-                const std::vector<HoleIndex>& route, RouteDiff& out) {
-  out.removed.clear();
-  out.added.clear();
+namespace {
+// Whether (a, b) is an edge of the cycle whose positions are `pos`.
+bool adjacent(const std::vector<std::uint32_t>& pos, HoleIndex a, HoleIndex b) {
+  const std::uint32_t pa = pos[a], pb = pos[b];
+  const std::size_t d = pa > pb ? pa - pb : pb - pa;
+  return d == 1 || d == pos.size() - 1;
+}
+
+// The exchange, given the positions in `route` (ascending) of its edges that
+// `ref` lacks: edge i runs from route[i] to route[i + 1].
+void diff_from_added(const std::vector<HoleIndex>& ref, const std::vector<std::uint32_t>& ref_pos,
+                     const std::vector<HoleIndex>& route, const std::vector<std::size_t>& added_at, RouteDiff& out) {
   const std::size_t m = route.size();
-  if (m < 4) return;
-  auto in_ref = [&](HoleIndex a, HoleIndex b) {
-    const std::uint32_t pa = ref_pos[a], pb = ref_pos[b];
-    const std::size_t d = pa > pb ? pa - pb : pb - pa;
-    return d == 1 || d == m - 1;
-  };
   // The holes at a new edge, with their two neighbours on the route: an edge
   // of R at such a hole is removed unless it is one of those two.
   struct Touched {
     HoleIndex hole, prev, next;
   };
   std::vector<Touched> touched;
-  for (std::size_t i = 0; i < m; ++i) {
+  for (const std::size_t i : added_at) {
     const HoleIndex a = route[i], b = route[i + 1 == m ? 0 : i + 1];
-    if (in_ref(a, b)) continue;
     out.added.push_back(ordered(a, b));
     touched.push_back({a, route[(i + m - 1) % m], b});
     touched.push_back({b, a, route[(i + 2) % m]});
@@ -52,6 +53,40 @@ void route_diff(const std::vector<HoleIndex>& ref, const std::vector<std::uint32
   }
   std::sort(out.removed.begin(), out.removed.end());
   out.removed.erase(std::unique(out.removed.begin(), out.removed.end()), out.removed.end());
+}
+}  // namespace
+
+void route_diff(const std::vector<HoleIndex>& ref, const std::vector<std::uint32_t>& ref_pos,
+                const std::vector<HoleIndex>& route, RouteDiff& out) {
+  out.removed.clear();
+  out.added.clear();
+  const std::size_t m = route.size();
+  if (m < 4) return;
+  std::vector<std::size_t> added_at;
+  for (std::size_t i = 0; i < m; ++i) {
+    if (!adjacent(ref_pos, route[i], route[i + 1 == m ? 0 : i + 1])) added_at.push_back(i);
+  }
+  diff_from_added(ref, ref_pos, route, added_at, out);
+}
+
+void route_diff(const std::vector<HoleIndex>& ref, const std::vector<std::uint32_t>& ref_pos,
+                const std::vector<HoleIndex>& route, const std::vector<std::uint32_t>& route_pos,
+                const std::vector<HoleIndex>& near, RouteDiff& out) {
+  out.removed.clear();
+  out.added.clear();
+  const std::size_t m = route.size();
+  if (m < 4) return;
+  // A new edge has an end in `near`: it is one of the two edges at that end.
+  std::vector<std::size_t> added_at;
+  for (const HoleIndex h : near) {
+    const std::size_t p = route_pos[h];
+    for (const std::size_t i : {p, (p + m - 1) % m}) {
+      if (!adjacent(ref_pos, route[i], route[i + 1 == m ? 0 : i + 1])) added_at.push_back(i);
+    }
+  }
+  std::sort(added_at.begin(), added_at.end());
+  added_at.erase(std::unique(added_at.begin(), added_at.end()), added_at.end());
+  diff_from_added(ref, ref_pos, route, added_at, out);
 }
 
 std::size_t DiffMerger::merge(const std::vector<HoleIndex>& ref, const std::vector<std::uint32_t>& ref_pos,

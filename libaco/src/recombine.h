@@ -29,6 +29,15 @@ struct RouteDiff {
 // `ref_pos`), in one pass over `route`.
 void route_diff(const std::vector<HoleIndex>& ref, const std::vector<std::uint32_t>& ref_pos,
                 const std::vector<HoleIndex>& route, RouteDiff& out);
+// The same exchange, the same lists in the same order, looking only at the
+// route's edges at the holes of `near`, which must hold an end of every edge
+// of `route` that `ref` lacks (an ant's local search: every hole it was asked
+// to look at or whose edges a move changed). `route_pos`: positions in
+// `route`. O(|near| log |near|): at 100 000 holes the pass over the whole
+// route took 2.4 % of a run's perf samples, this 0.1 %.
+void route_diff(const std::vector<HoleIndex>& ref, const std::vector<std::uint32_t>& ref_pos,
+                const std::vector<HoleIndex>& route, const std::vector<std::uint32_t>& route_pos,
+                const std::vector<HoleIndex>& near, RouteDiff& out);
 
 class DiffMerger {
  public:
