@@ -48,14 +48,17 @@ def main():
     machine = dict(line.strip().split("=", 1) for line in open(os.path.join(d, "machine.txt")) if "=" in line)
     w("# Benchmarks\n")
     w("Measured by the harness and written by `scripts/benchmarks`; regenerate with that one command "
-      "(about 20 minutes on 2 cores). Raw data: `docs/bench/`.\n")
+      "(most of an hour on 2 cores: the gap table alone runs its budgets for 5 seeds, 24 minutes). Raw data: "
+      "`docs/bench/`.\n")
     w(f"Machine: {machine.get('cpu')}, {machine.get('cores')} cores, {machine.get('memory')}, {machine.get('os')}, "
       f"{machine.get('compiler')}; commit {machine.get('commit')}.\n")
     if machine.get("remeasured"):
         w(f"Rows measured again: {machine.get('remeasured')}.\n")
-    if machine.get("sections") and machine.get("sections") != "thesis targets gap speedup programs micro":
+    if machine.get("sections") and machine.get("sections") != "thesis targets gap speedup scale programs micro":
         w(f"That run measured these sections: {machine.get('sections')}; the others keep the CSVs of an earlier "
           "run (`git log docs/bench`).\n")
+    for key in sorted(k for k in machine if k.startswith("measured.")):
+        w(f"Measured again since: the {key.split('.', 1)[1]} section, at {machine[key]}.\n")
 
     # Gap at fixed budgets, beside the best published parallel ACO (issue 12).
     path = os.path.join(d, "tsp-targets.csv")
@@ -97,6 +100,28 @@ def main():
               f"{'' if faco is None else f'{faco:.2f} %'} | {'' if lkh is None else f'{lkh:.2f} %'} | "
               f"{'' if bound is None else f'{bound:.2f} %'} | "
               f"{statistics.median(walls):.2f} | {rss} | {len(rs)} |")
+        w("")
+
+    # 33 000 and 100 000 holes (issue 24).
+    path = os.path.join(d, "scale.csv")
+    if os.path.exists(path):
+        w("## 33 000 and 100 000 holes\n")
+        w("`acodrill tsp INSTANCE --time-limit BUDGET --threads 2 --seed K`, default settings, whole process, on "
+          "holes at uniform random places on a square plate in random order (`bench/make_uniform.py`, seed 1; "
+          "EUC_2D). No optimum is known for them: the lengths are given against the Beardwood-Halton-Hammersley "
+          "estimate 0.7124·√(n·A) of the optimum, which a square's edges make a little short, so the optimum "
+          "itself lies somewhat above it. Neither LKH-3 nor Focused ACO can be run on this machine.\n")
+        w("| instance | holes | budget s | median above the estimate | min | max | median wall s | peak RSS MB | seeds |")
+        w("|---|---:|---:|---:|---:|---:|---:|---:|---:|")
+        by = {}
+        for r in rows(path):
+            by.setdefault((r["instance"], int(r["n"]), r["budget_s"]), []).append(r)
+        for (inst, n, budget), rs in sorted(by.items(), key=lambda kv: kv[0][1]):
+            excess = [float(r["bhh_excess_pct"]) for r in rs]
+            walls = [float(r["wall_s"]) for r in rs]
+            w(f"| {inst} | {n} | {budget} | {statistics.median(excess):.2f} % | {min(excess):.2f} % | "
+              f"{max(excess):.2f} % | {statistics.median(walls):.2f} | {max(int(r['peak_rss_mb']) for r in rs)} | "
+              f"{len(rs)} |")
         w("")
 
     # Gap against time per algorithm, and baselines.
