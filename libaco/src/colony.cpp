@@ -820,12 +820,14 @@ Solution Colony::run() {
     out.worn_to = w.worn.size();
     // Only where update() merges them (above kManyAntsFrom holes).
     out.improves = focused && n_ > kManyAntsFrom && out.length < ref_len_ - 1e-9;
-    if (out.improves && use_ls && searchers[static_cast<std::size_t>(worker)].searched_all()) {
-      // Only where the ant or its search changed an edge.
-      const LocalSearcher& ls = searchers[static_cast<std::size_t>(worker)];
-      detail::route_diff(ref_route_, ref_pos_, w.route, ls.positions(), ls.searched(), out.diff);
-    } else if (out.improves) {
-      detail::route_diff(ref_route_, ref_pos_, w.route, out.diff);
+    if (out.improves) {
+      // Only where the ant or its search changed an edge, when the search can say.
+      const LocalSearcher* ls = use_ls ? &searchers[static_cast<std::size_t>(worker)] : nullptr;
+      if (ls != nullptr && ls->searched_all()) {
+        detail::route_diff(ref_route_, ref_pos_, w.route, ls->positions(), ls->searched(), out.diff);
+      } else {
+        detail::route_diff(ref_route_, ref_pos_, w.route, out.diff);
+      }
     }
     if (!focused) {
       std::swap(out.route, w.route);

@@ -420,7 +420,6 @@ void LocalSearcher::unload(std::vector<HoleIndex>& route) { route.swap(route_); 
 void LocalSearcher::improve_from(std::vector<HoleIndex>& route, Moves moves, const std::vector<HoleIndex>& seeds) {
   m_ = route.size();
   gain_ = 0.0;
-  queue_.clear();
   forgot_ = true;  // searched() says nothing of a route it did not search
   if (m_ < 4 || cand_.k == 0 || seeds.empty()) return;
   load(route);

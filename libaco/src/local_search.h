@@ -48,11 +48,11 @@ class alignas(64) LocalSearcher {
   // their splits were a fifth of the perf samples (29 588 holes, 440 an ant).
   void improve_from(std::vector<HoleIndex>& route, Moves moves, const std::vector<HoleIndex>& seeds);
   static constexpr std::size_t kWindow = 100000;
-  // After improve_from, unless it searched so long that its queue forgot
-  // its head (searched_all() false): every hole it was given or whose edges
-  // a move changed (some more than once), so an end of every edge of the
-  // route that the route it was given lacked. And each hole's position in
-  // the route. Valid until the next search.
+  // After an improve_from that searched (searched_all(): it had seeds, and
+  // its queue never dropped its head on a long search): every hole it was
+  // given or whose edges a move changed (some more than once), so an end of
+  // every edge of the route that the route it was given lacked; and each
+  // hole's position in the route. Valid until the next search.
   bool searched_all() const { return !forgot_; }
   const std::vector<HoleIndex>& searched() const { return queue_; }
   const std::vector<std::uint32_t>& positions() const { return pos_; }

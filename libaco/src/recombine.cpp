@@ -28,7 +28,10 @@ bool adjacent(const std::vector<std::uint32_t>& pos, HoleIndex a, HoleIndex b) {
 // `ref` lacks: edge i runs from route[i] to route[i + 1].
 void diff_from_added(const std::vector<HoleIndex>& ref, const std::vector<std::uint32_t>& ref_pos,
                      const std::vector<HoleIndex>& route, const std::vector<std::size_t>& added_at, RouteDiff& out) {
+  out.removed.clear();
+  out.added.clear();
   const std::size_t m = route.size();
+  if (m < 4) return;
   // The holes at a new edge, with their two neighbours on the route: an edge
   // of R at such a hole is removed unless it is one of those two.
   struct Touched {
@@ -58,10 +61,7 @@ void diff_from_added(const std::vector<HoleIndex>& ref, const std::vector<std::u
 
 void route_diff(const std::vector<HoleIndex>& ref, const std::vector<std::uint32_t>& ref_pos,
                 const std::vector<HoleIndex>& route, RouteDiff& out) {
-  out.removed.clear();
-  out.added.clear();
   const std::size_t m = route.size();
-  if (m < 4) return;
   std::vector<std::size_t> added_at;
   for (std::size_t i = 0; i < m; ++i) {
     if (!adjacent(ref_pos, route[i], route[i + 1 == m ? 0 : i + 1])) added_at.push_back(i);
@@ -72,10 +72,7 @@ void route_diff(const std::vector<HoleIndex>& ref, const std::vector<std::uint32
 void route_diff(const std::vector<HoleIndex>& ref, const std::vector<std::uint32_t>& ref_pos,
                 const std::vector<HoleIndex>& route, const std::vector<std::uint32_t>& route_pos,
                 const std::vector<HoleIndex>& near, RouteDiff& out) {
-  out.removed.clear();
-  out.added.clear();
   const std::size_t m = route.size();
-  if (m < 4) return;
   // A new edge has an end in `near`: it is one of the two edges at that end.
   std::vector<std::size_t> added_at;
   for (const HoleIndex h : near) {
