@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <random>
 
@@ -237,6 +238,38 @@ TEST(solver_test, metrics) {
   EXPECT_DOUBLE_EQ(aco::distance(aco::Metric::Manhattan, {0, 0}, {3, 4}), 7.0);
   EXPECT_DOUBLE_EQ(aco::distance(aco::Metric::TsplibEuc2d, {0, 0}, {1, 1}), 1.0);
   EXPECT_DOUBLE_EQ(aco::distance(aco::Metric::TsplibEuc2d, {0, 0}, {1.5, 1.5}), 2.0);
+}
+
+// EUC_2D and ATT round by taking a double's integer part by conversion, not
+// by std::floor (problem.h): the same bits as the formulas they stand for, at
+// ties (x.5), on whole numbers, near and beyond 2^52 and 2^63, and for NaN.
+TEST(solver_test, tsplib_roundings_give_the_bits_of_their_formulas) {
+  auto same_bits = [](double a, double b) { return std::isnan(a) ? std::isnan(b) : std::signbit(a) == std::signbit(b) && a == b; };
+  std::vector<double> xs = {0.0, 0.5, 1.0, 1.5, 2.5, 0.49999999999999994, 1e15 + 0.5, 4503599627370495.5,
+                            4503599627370496.0, 4503599627370497.0, 9007199254740993.0, 9.3e18, 1e300,
+                            std::numeric_limits<double>::infinity(), std::numeric_limits<double>::quiet_NaN(),
+                            std::numeric_limits<double>::denorm_min()};
+  std::mt19937_64 rng(7);
+  for (int i = 0; i < 200000; ++i) {
+    const double x = std::ldexp(std::uniform_real_distribution<double>(0.0, 1.0)(rng), static_cast<int>(rng() % 70) - 5);
+    xs.push_back(x);
+    xs.push_back(std::floor(x) + 0.5);  // a tie of nint
+    xs.push_back(std::floor(x));
+  }
+  for (double x : xs) {
+    EXPECT_TRUE(same_bits(aco::detail::floor_nonnegative(x), std::floor(x))) << x;
+  }
+  // And through distance(), on points of TSPLIB-like coordinates.
+  std::uniform_real_distribution<double> coordinate(0.0, 1e6);
+  for (int i = 0; i < 100000; ++i) {
+    const aco::Point2 a{coordinate(rng), coordinate(rng)}, b{std::round(coordinate(rng)), std::round(coordinate(rng))};
+    const double r = std::sqrt((a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y));
+    ASSERT_EQ(aco::distance(aco::Metric::TsplibEuc2d, a, b), std::floor(r + 0.5));
+    ASSERT_EQ(aco::distance(aco::Metric::TsplibCeil2d, a, b), std::ceil(r));
+    const double att = std::sqrt(((a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y)) / 10.0);
+    const double t = std::floor(att + 0.5);
+    ASSERT_EQ(aco::distance(aco::Metric::TsplibAtt, a, b), t < att ? t + 1.0 : t);
+  }
 }
 
 TEST(solver_test, parameter_validation) {
