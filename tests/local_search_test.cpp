@@ -317,6 +317,30 @@ TEST(local_search_test, candidate_rows_are_the_same_on_any_thread_count) {
   }
 }
 
+// The local search reads a row's distances from the lists (Candidates::length):
+// each must be Space::d of its entry, the same bits, from every builder.
+TEST(local_search_test, candidate_lengths_are_the_distances_of_their_rows) {
+  for (const int layout : {0, 1, 2}) {
+    const aco::Problem p = layout == 2 ? lattice_with_pile() : random_problem(1500, 5, aco::Shape::ClosedTour, layout == 1);
+    const aco::detail::Space space(p);
+    auto expect_lengths = [&](const aco::detail::Candidates& c, const char* builder) {
+      SCOPED_TRACE(::testing::Message() << builder << ", layout " << layout);
+      ASSERT_EQ(c.length.size(), c.list.size());
+      std::size_t wrong = 0;
+      for (HoleIndex i = 0; i < space.holes(); ++i) {
+        for (int r = 0; r < c.k; ++r) wrong += c.lengths_of(i)[r] != space.d(i, c.of(i)[r]);
+      }
+      EXPECT_EQ(wrong, 0u);
+    };
+    const aco::detail::Candidates nearest = aco::detail::build_candidates(space, 16, 2);
+    expect_lengths(nearest, "build_candidates");
+    expect_lengths(aco::detail::build_candidates(space, static_cast<int>(space.holes()) - 1), "build_candidates, every hole");
+    expect_lengths(aco::detail::with_quadrant_neighbours(space, nearest), "with_quadrant_neighbours");
+    expect_lengths(aco::detail::joined_nearest(space, 16, 2), "joined_nearest");
+    expect_lengths(aco::detail::alpha_candidates(space, nearest, 5, 20, 2), "alpha_candidates");
+  }
+}
+
 TEST(local_search_test, candidate_edges_are_each_row_edge_once_in_order) {
   for (const int layout : {0, 1, 2}) {
     const aco::Problem p = layout == 2 ? lattice_with_pile() : random_problem(700, 3, aco::Shape::ClosedTour, layout == 1);

@@ -433,6 +433,7 @@ Candidates build_candidates(const Space& space, int k, Team& team) {
   Candidates c;
   c.k = std::max(0, std::min<int>(k, static_cast<int>(n) - 1));
   c.list.assign(static_cast<std::size_t>(n) * c.k, 0);
+  c.length.assign(c.list.size(), 0.0);
   if (c.k == 0) return c;
   PointCloud cloud{&space};
   Tree tree(2, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));
@@ -474,7 +475,11 @@ Candidates build_candidates(const Space& space, int k, Team& team) {
         std::partial_sort(row.begin(), row.begin() + c.k, row.end());
       }
       HoleIndex* out = c.list.data() + static_cast<std::size_t>(i) * c.k;
-      for (int r = 0; r < c.k; ++r) out[r] = row[r].second;
+      double* out_length = c.length.data() + static_cast<std::size_t>(i) * c.k;
+      for (int r = 0; r < c.k; ++r) {
+        out[r] = row[r].second;
+        out_length[r] = row[r].first;
+      }
     }
   });
   return c;
@@ -504,6 +509,8 @@ Candidates with_quadrant_neighbours(const Space& space, Candidates nearest) {
       return da < db || (da == db && a < b);
     });
     std::copy(row.begin(), row.end(), out);
+    double* out_length = nearest.length.data() + static_cast<std::size_t>(i) * k;
+    for (int r = 0; r < k; ++r) out_length[r] = space.d(i, out[r]);
   }
   return nearest;
 }
@@ -568,6 +575,7 @@ Candidates alpha_candidates(const Space& space, const Candidates& nearest, int k
   Candidates out;
   out.k = std::min(k, nearest.k);
   out.list.assign(static_cast<std::size_t>(n) * out.k, 0);
+  out.length.assign(out.list.size(), 0.0);
   if (out.k == 0) return out;
   // The neighbour graph, each edge once.
   std::vector<SpanningForest::Edge> graph;
@@ -720,7 +728,11 @@ Candidates alpha_candidates(const Space& space, const Candidates& nearest, int k
       std::stable_sort(row.begin(), row.end());
       std::sort(row.begin(), row.begin() + out.k, [](auto x, auto y) { return x.second < y.second; });
       HoleIndex* o = out.list.data() + static_cast<std::size_t>(i) * out.k;
-      for (int r = 0; r < out.k; ++r) o[r] = nr[row[r].second];
+      double* o_length = out.length.data() + static_cast<std::size_t>(i) * out.k;
+      for (int r = 0; r < out.k; ++r) {
+        o[r] = nr[row[r].second];
+        o_length[r] = space.d(i, o[r]);
+      }
     }
   });
   return out;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace aco::detail {
 
@@ -18,6 +19,7 @@ LocalSearcher::LocalSearcher(const Space& space, const Candidates& candidates)
   pos_.assign(m, 0);
   queue_.reserve(m * 2);
   queued_.assign(m, 0);
+  if (candidates.length.size() != candidates.list.size()) throw std::logic_error("LocalSearcher: candidate lists without their lengths");
 }
 
 void LocalSearcher::push(HoleIndex node) {
@@ -72,13 +74,14 @@ void LocalSearcher::apply_two_opt(std::size_t x, std::size_t y) {
 bool LocalSearcher::try_two_opt(HoleIndex a) {
   const std::size_t pa = pos_[a];
   const HoleIndex* nbr = cand_.of(a);
+  const double* nbr_length = cand_.lengths_of(a);
   for (int dir = 0; dir < 2; ++dir) {
     // dir 0 replaces (a, succ a); dir 1 replaces (pred a, a).
     const std::size_t edge_a = dir == 0 ? pa : pred(pa);
     const double d_a = cost_at(edge_a);
     for (int r = 0; r < cand_.k; ++r) {
       const HoleIndex c = nbr[r];
-      const double g1 = d_a - space_.d(a, c);
+      const double g1 = d_a - nbr_length[r];
       // Sound pruning (neighbours are sorted): a gaining 2-opt move has a first
       // partial gain > 0 at one of its endpoints, where it is found instead.
       if (g1 <= kEps) break;
@@ -164,11 +167,12 @@ bool LocalSearcher::try_or_opt(HoleIndex a) {
       for (int end = 0; end < 2; ++end) {
         const HoleIndex anchor = end == 0 ? f : l;
         const HoleIndex* nbr = cand_.of(anchor);
+        const double* nbr_length = cand_.lengths_of(anchor);
         for (int r = 0; r < cand_.k; ++r) {
           const HoleIndex c = nbr[r];
           // Heuristic cut (sorted neighbours): an insertion next to c costs at
           // least about d(anchor, c), which must be paid from remove_gain.
-          if (space_.d(anchor, c) >= remove_gain) break;
+          if (nbr_length[r] >= remove_gain) break;
           const std::size_t pc = pos_[c];
           if (pc >= s && pc <= last) continue;
           if (windowed_ && (!in_window(pc) || pc == 0 || pc + 1 >= hi_)) continue;
@@ -264,9 +268,10 @@ bool LocalSearcher::three_opt_step(HoleIndex t1, int dir, double gain, Step* bes
   const HoleIndex v = space_.open() ? space_.virtual_node() : static_cast<HoleIndex>(-1);
   const HoleIndex t2 = next(t1, dir);
   const HoleIndex* n2 = cand_.of(t2);
+  const double* n2_length = cand_.lengths_of(t2);
   for (int r3 = 0; r3 < breadth; ++r3) {
     const HoleIndex t3 = n2[r3];
-    const double g1 = gain - space_.d(t2, t3);
+    const double g1 = gain - n2_length[r3];
     if (g1 <= kEps) break;
     if (t3 == t1 || t3 == next(t2, dir)) continue;
     for (int stretch = 0; stretch < 2; ++stretch) {
@@ -277,9 +282,10 @@ bool LocalSearcher::three_opt_step(HoleIndex t1, int dir, double gain, Step* bes
       if (t4 == v || t4 == t1 || t4 == t2) continue;
       const double g1x = g1 + space_.d(t3, t4);
       const HoleIndex* n4 = cand_.of(t4);
+      const double* n4_length = cand_.lengths_of(t4);
       for (int r5 = 0; r5 < breadth; ++r5) {
         const HoleIndex t5 = n4[r5];
-        const double g2 = g1x - space_.d(t4, t5);
+        const double g2 = g1x - n4_length[r5];
         if (g2 <= kEps) break;
         if (t5 == t3 || t5 == t1) continue;
         if (stretch == 0) {
