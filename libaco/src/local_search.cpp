@@ -37,6 +37,18 @@ double LocalSearcher::two_opt_gain(std::size_t i, std::size_t j) const {
 void LocalSearcher::reverse(std::size_t i, std::size_t j) {
   std::size_t l = i + 1, r = j;
   std::size_t inner = j - i;
+  // The two holes are read once into locals: pos_ and route_ are both arrays
+  // of 32-bit integers, so after a write to one the compiler read route_
+  // again, twice a step.
+  HoleIndex* const route = route_.data();
+  std::uint32_t* const pos = pos_.data();
+  auto swap_at = [route, pos](std::size_t x, std::size_t y) {
+    const HoleIndex a = route[x], b = route[y];
+    route[x] = b;
+    route[y] = a;
+    pos[b] = static_cast<std::uint32_t>(x);
+    pos[a] = static_cast<std::uint32_t>(y);
+  };
   // A closed tour has no fixed position: reversing the complement gives the
   // same cycle, and is cheaper when the inner part is longer than half.
   if (!space_.open() && !windowed_ && inner * 2 > m_) {
@@ -44,18 +56,14 @@ void LocalSearcher::reverse(std::size_t i, std::size_t j) {
     l = succ(j);
     r = i;
     for (std::size_t s = 0; s < outer / 2; ++s) {
-      std::swap(route_[l], route_[r]);
-      pos_[route_[l]] = static_cast<std::uint32_t>(l);
-      pos_[route_[r]] = static_cast<std::uint32_t>(r);
+      swap_at(l, r);
       l = succ(l);
       r = pred(r);
     }
     return;
   }
   while (l < r) {
-    std::swap(route_[l], route_[r]);
-    pos_[route_[l]] = static_cast<std::uint32_t>(l);
-    pos_[route_[r]] = static_cast<std::uint32_t>(r);
+    swap_at(l, r);
     ++l;
     --r;
   }
