@@ -15,9 +15,9 @@ struct Candidates {
   int k = 0;
   std::vector<HoleIndex> list;  // n * k, row i = the k nearest holes of i
   // Beside each entry of `list`, its distance from the row's hole (Space::d,
-  // the same bits). The local search reads it where it walks a row: computed
-  // there each time, EUC_2D's square root and rounding took 8-13 % of the
-  // time of the same routes (brd14051, d15112). Every builder below fills it.
+  // the same bits). The local search reads it where it walks a row: with the
+  // distance computed there each time, the same routes took 10-14 % longer
+  // (brd14051, d15112, pcb3038, pla7397). Every builder below fills it.
   std::vector<double> length;
 
   const HoleIndex* of(HoleIndex i) const { return list.data() + static_cast<std::size_t>(i) * k; }
