@@ -146,6 +146,7 @@ TEST(local_search_test, an_ants_exchange_read_where_its_search_looked_is_the_who
       // A 2-opt optimum, so the ants' 3-opt searches find more to change.
       std::vector<HoleIndex> ref = start_route(space, p, 2);
       ls.improve(ref, Moves::TwoOpt);
+      EXPECT_FALSE(ls.searched_all());  // searched() tells of improve_from alone
       std::vector<std::uint32_t> ref_pos(ref.size());
       for (std::size_t i = 0; i < ref.size(); ++i) ref_pos[ref[i]] = static_cast<std::uint32_t>(i);
       std::mt19937 rng(7);

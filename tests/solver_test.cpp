@@ -259,13 +259,13 @@ TEST(solver_test, tsplib_roundings_give_the_bits_of_their_formulas) {
   for (double x : xs) {
     EXPECT_TRUE(same_bits(aco::detail::floor_nonnegative(x), std::floor(x))) << x;
   }
-  // And through distance(), on points of TSPLIB-like coordinates.
+  // And through distance(), on points of TSPLIB-like coordinates (CEIL_2D
+  // calls std::ceil itself, so there is nothing to compare it with).
   std::uniform_real_distribution<double> coordinate(0.0, 1e6);
   for (int i = 0; i < 100000; ++i) {
     const aco::Point2 a{coordinate(rng), coordinate(rng)}, b{std::round(coordinate(rng)), std::round(coordinate(rng))};
     const double r = std::sqrt((a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y));
     ASSERT_EQ(aco::distance(aco::Metric::TsplibEuc2d, a, b), std::floor(r + 0.5));
-    ASSERT_EQ(aco::distance(aco::Metric::TsplibCeil2d, a, b), std::ceil(r));
     const double att = std::sqrt(((a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y)) / 10.0);
     const double t = std::floor(att + 0.5);
     ASSERT_EQ(aco::distance(aco::Metric::TsplibAtt, a, b), t < att ? t + 1.0 : t);

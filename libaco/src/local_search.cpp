@@ -407,6 +407,7 @@ void LocalSearcher::search_whole_route_from(const HoleIndex* first, const HoleIn
 void LocalSearcher::improve(std::vector<HoleIndex>& route, Moves moves) {
   m_ = route.size();
   gain_ = 0.0;
+  forgot_ = true;  // searched() tells of improve_from alone: windows here clear the queue
   if (m_ < 4 || cand_.k == 0) return;
   load(route);
   std::fill(queued_.begin(), queued_.end(), 0);
