@@ -49,9 +49,6 @@ using detail::Space;
 
 // Up to this many holes the candidate list is every other hole (the exact Ant System).
 constexpr std::size_t kFullListLimit = 800;
-// How far ahead the serial update's passes over a whole route ask for the
-// holes they will read: in route order those may lie anywhere in memory.
-constexpr std::size_t kPrefetchAhead = 16;
 
 // With local search, above kFullListLimit, the candidates are the
 // p.candidates (default 5) alpha-nearest among each hole's kAlphaFrom
@@ -280,6 +277,40 @@ class Colony {
     r = rank_of(b, a);
     if (r >= 0) slots.push_back(idx(b, r));
   }
+  // The trail slots of every edge of `route`, both ways: the set add_slots()
+  // gives edge by edge (a row holds each hole once; the trail treats each
+  // slot on its own, so their order is free). Short rows are read hole by
+  // hole in memory order, against the hole's two neighbours in the route,
+  // without a branch a match; the slots come out in trail order too. At
+  // 100 000 holes a reinforcement took 5.0-5.2 ms edge by edge (two rows
+  // somewhere else in memory an edge), now 3.0-3.2; with a branch a match,
+  // mispredicted, the rows alone took 3.2 ms.
+  void route_slots(const std::vector<HoleIndex>& route, std::vector<std::size_t>& slots) {
+    slots.clear();
+    const std::size_t mm = route.size();
+    if (!rank_.empty() || mm < 3) {  // rows of every hole: rank_ finds a slot at once
+      for (std::size_t i = 0; i < mm; ++i) add_slots(route[i], route[(i + 1) % mm], slots);
+      return;
+    }
+    route_neighbours_.resize(2 * static_cast<std::size_t>(n_));
+    for (std::size_t i = 0; i < mm; ++i) {
+      const HoleIndex a = route[i], b = route[(i + 1) % mm];
+      if (a < n_) route_neighbours_[2 * static_cast<std::size_t>(a) + 1] = b;
+      if (b < n_) route_neighbours_[2 * static_cast<std::size_t>(b)] = a;
+    }
+    slots.resize(2 * static_cast<std::size_t>(n_) + static_cast<std::size_t>(k_));
+    std::size_t count = 0;
+    for (HoleIndex h = 0; h < n_; ++h) {
+      const HoleIndex* c = cand_.of(h);
+      const HoleIndex before = route_neighbours_[2 * static_cast<std::size_t>(h)];
+      const HoleIndex after = route_neighbours_[2 * static_cast<std::size_t>(h) + 1];
+      for (int r = 0; r < k_; ++r) {
+        slots[count] = idx(h, r);
+        count += static_cast<std::size_t>((c[r] == before) | (c[r] == after));
+      }
+    }
+    slots.resize(count);
+  }
   // ACS's local update: an edge an ant used loses some trail, toward tau0.
   double wear(double t) const { return (1.0 - kWear) * t + kWear * tau0_; }
   // The slots of edge (a, b) that wearing changes. Wearing is one map applied
@@ -309,6 +340,7 @@ class Colony {
   int k_ = 0;
   detail::Trail tau_;
   std::vector<double> choice_, eta_beta_;
+  std::vector<HoleIndex> route_neighbours_;  // route_slots()' scratch: each hole's two, 2n
   std::vector<int> rank_;  // full-list mode: rank of j in i's list
   // Full-list mode: choice by (i, j), so an ant scans only its unvisited holes
   // (n²/2 per tour instead of n²; measured 2x on the thesis's 70-hole runs).
@@ -1039,14 +1071,7 @@ Solution Colony::run() {
         const int reinforce_every = static_cast<int>(std::max<std::size_t>(1, n_ / kReinforceHoles));
         if (reinforced_for != gbest_len && (reinforced_for < 0.0 || it - reinforced_at >= reinforce_every)) {
           reinforced_at = it;
-          reinforce_slots.clear();
-          const std::size_t mm = gbest.size();
-          for (std::size_t i = 0; i < mm; ++i) {
-            if (i + kPrefetchAhead < mm && gbest[i + kPrefetchAhead] < n_) {
-              __builtin_prefetch(cand_.of(gbest[i + kPrefetchAhead]));
-            }
-            add_slots(gbest[i], gbest[(i + 1) % mm], reinforce_slots);
-          }
+          route_slots(gbest, reinforce_slots);
           tau_.reinforce(reinforce_slots, gbest_len);
           reinforced_for = gbest_len;
         }

@@ -55,21 +55,13 @@ class Trail {
   }
   // From now on `slots` (the best route's, of length `length`) are reinforced.
   void reinforce(const std::vector<std::size_t>& slots, double length) {
-    for (std::size_t i = 0; i < reinforced_.size(); ++i) {
-      if (i + kAhead < reinforced_.size()) {
-        __builtin_prefetch(&tau_[reinforced_[i + kAhead]], 1);
-        __builtin_prefetch(&since_[reinforced_[i + kAhead]], 1);
-      }
-      const std::size_t e = reinforced_[i];
+    for (const std::size_t e : reinforced_) {
       tau_[e] = (*this)[e];
       since_[e] = kEager;
     }
     reinforced_ = slots;
     target_ = 1.0 / length;
-    for (std::size_t i = 0; i < reinforced_.size(); ++i) {
-      if (i + kAhead < reinforced_.size()) __builtin_prefetch(&since_[reinforced_[i + kAhead]], 1);
-      since_[reinforced_[i]] = updates_;
-    }
+    for (const std::size_t e : reinforced_) since_[e] = updates_;
   }
   // One global update of every reinforced slot.
   void global_update() { ++updates_; }
@@ -82,9 +74,6 @@ class Trail {
 
  private:
   static constexpr std::uint32_t kEager = UINT32_MAX;
-  // How far ahead reinforce() asks for the slots it will write: a route's
-  // slots are scattered over the trail.
-  static constexpr std::size_t kAhead = 16;
   std::vector<double> tau_;
   std::vector<std::uint32_t> since_;  // updates_ when tau_[e] was last exact, or kEager
   std::vector<double> decay_;         // (1 - rho)^g
