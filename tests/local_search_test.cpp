@@ -13,6 +13,7 @@
 
 #include "aco/baselines.h"
 #include "candidates.h"
+#include "flip_overlay.h"
 #include "local_search.h"
 #include "recombine.h"
 #include "space.h"
@@ -201,6 +202,112 @@ TEST(local_search_test, three_opt_improves_routes_that_two_opt_and_or_opt_left_a
       expect_route(space, route);
       EXPECT_LT(space.route_cost(route), or_opt * 0.995) << "seed " << seed;
       EXPECT_EQ(ls.failed_audits(), 0u) << "moves that did not shorten the route";
+    }
+  }
+}
+
+// The overlay against the same flips made on an array: after every flip,
+// each hole's position and both neighbours, a flip's length and betweenness
+// read the same as on the array (position 0 never moves in either).
+TEST(local_search_test, flip_overlay_reads_as_the_same_flips_made_on_an_array) {
+  std::mt19937 rng(11);
+  for (std::size_t m : {std::size_t{5}, std::size_t{9}, std::size_t{64}, std::size_t{1000}}) {
+    for (bool shortest_side : {false, true}) {
+      for (int trial = 0; trial < 30; ++trial) {
+        std::vector<HoleIndex> route(m);
+        std::iota(route.begin(), route.end(), 0);
+        std::shuffle(route.begin(), route.end(), rng);
+        std::vector<std::uint32_t> pos(m);
+        for (std::size_t i = 0; i < m; ++i) pos[route[i]] = static_cast<std::uint32_t>(i);
+        aco::detail::FlipOverlay overlay;
+        overlay.reset(route.data(), pos.data(), m, shortest_side);
+        std::vector<HoleIndex> flipped = route;  // the array the flips are made on
+        std::vector<std::size_t> at(m);          // its positions
+        auto index = [&] {
+          for (std::size_t i = 0; i < m; ++i) at[flipped[i]] = i;
+        };
+        index();
+        int made = 0;
+        for (int f = 0; f < aco::detail::FlipOverlay::kMaxFlips; ++f) {
+          // Two different edges, each (x, next x), given either way round.
+          const std::size_t i = rng() % m, j = rng() % m;
+          if (i == j) continue;
+          HoleIndex a = flipped[i], b = flipped[(i + 1) % m], c = flipped[j], d = flipped[(j + 1) % m];
+          if (rng() % 2) {
+            std::swap(a, b);
+            std::swap(c, d);
+          }
+          const std::size_t lo = std::min(i, j), hi = std::max(i, j);
+          const std::size_t inner = hi - lo;
+          EXPECT_EQ(overlay.flip_length(a, b, c, d), shortest_side ? std::min(inner, m - inner) : inner);
+          overlay.flip(a, b, c, d);
+          std::reverse(flipped.begin() + static_cast<long>(lo + 1), flipped.begin() + static_cast<long>(hi + 1));
+          index();
+          ++made;
+          ASSERT_EQ(overlay.flips(), made);
+          EXPECT_EQ(overlay.flip_at(made - 1), (std::array<HoleIndex, 4>{a, b, c, d}));
+          for (HoleIndex x = 0; x < m; ++x) {
+            ASSERT_EQ(overlay.position(x), at[x]) << "m " << m << " flip " << f << " hole " << x;
+            ASSERT_EQ(overlay.next(x, 0), flipped[(at[x] + 1) % m]);
+            ASSERT_EQ(overlay.next(x, 1), flipped[(at[x] + m - 1) % m]);
+          }
+          for (int q = 0; q < 20; ++q) {
+            const HoleIndex x = flipped[rng() % m], y = flipped[rng() % m], z = flipped[rng() % m];
+            const std::size_t px = at[x], py = at[y], pz = at[z];
+            const bool forward = px <= pz ? (px <= py && py <= pz) : (py >= px || py <= pz);
+            const bool backward = pz <= px ? (pz <= py && py <= px) : (py >= pz || py <= px);
+            EXPECT_EQ(overlay.between(x, y, z, 0), forward);
+            EXPECT_EQ(overlay.between(x, y, z, 1), backward);
+          }
+        }
+        // The array the overlay reads was never written.
+        for (std::size_t i = 0; i < m; ++i) ASSERT_EQ(pos[route[i]], i);
+      }
+    }
+  }
+}
+
+// deepen()'s trial flips, made on the array and undone or kept in the
+// overlay from their first long one on: the same routes and gains whichever
+// way, closed and open, from whole searches and from an ant's seeds.
+TEST(local_search_test, deepen_finds_the_same_moves_with_its_trial_flips_in_the_overlay) {
+  for (aco::Shape shape : {aco::Shape::ClosedTour, aco::Shape::OpenPath}) {
+    for (bool clustered : {false, true}) {
+      const aco::Problem p = random_problem(4000, clustered ? 3u : 4u, shape, clustered);
+      const aco::detail::Space space(p);
+      const aco::detail::Candidates cand = aco::detail::build_candidates(space, 6);
+      std::vector<std::vector<HoleIndex>> routes;
+      std::vector<double> gains;
+      for (std::size_t array_flip : {std::numeric_limits<std::size_t>::max(), std::size_t{0}, std::size_t{40}}) {
+        SCOPED_TRACE(::testing::Message() << "shape " << int(shape) << " clustered " << clustered << " array flip " << array_flip);
+        aco::detail::LocalSearcher ls(space, cand);
+        ls.array_flip(array_flip);
+        std::vector<HoleIndex> route = start_route(space, p, 1);  // shuffled: long flips from the start
+        ls.improve(route, Moves::ThreeOpt);
+        double gain = ls.gain();
+        std::mt19937 rng(5);
+        for (int kick = 0; kick < 30; ++kick) {
+          // A double bridge within 60 positions, then a search from its ends.
+          const std::size_t a = 1 + rng() % (route.size() - 70);
+          std::size_t cut[3] = {a + rng() % 60, a + rng() % 60, a + rng() % 60};
+          std::sort(cut, cut + 3);
+          if (!(cut[0] < cut[1] && cut[1] < cut[2])) continue;
+          std::rotate(route.begin() + static_cast<long>(cut[0] + 1), route.begin() + static_cast<long>(cut[1] + 1),
+                      route.begin() + static_cast<long>(cut[2] + 1));
+          const std::size_t mid = cut[0] + (cut[2] - cut[1]);
+          std::vector<HoleIndex> seeds;
+          for (std::size_t q : {cut[0], cut[0] + 1, mid, mid + 1, cut[2], cut[2] + 1}) seeds.push_back(route[q]);
+          ls.improve_from(route, Moves::ThreeOpt, seeds);
+          gain += ls.gain();
+        }
+        expect_route(space, route);
+        routes.push_back(route);
+        gains.push_back(gain);
+      }
+      EXPECT_EQ(routes[1], routes[0]);
+      EXPECT_EQ(routes[2], routes[0]);
+      EXPECT_EQ(gains[1], gains[0]);
+      EXPECT_EQ(gains[2], gains[0]);
     }
   }
 }

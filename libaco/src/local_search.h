@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "candidates.h"
+#include "flip_overlay.h"
 #include "space.h"
 
 namespace aco::detail {
@@ -67,6 +68,8 @@ class alignas(64) LocalSearcher {
   void audit(bool on) { audit_ = on; }
   // For tests: Or-opt moves by reversals from this shift on (see kFarShift).
   void far_shift(std::size_t holes) { far_shift_ = holes; }
+  // For tests: deepen()'s trial flips longer than this go to its overlay (see kArrayFlip).
+  void array_flip(std::size_t positions) { array_flip_ = positions; }
   // An Or-opt move that would shift at least this many holes is made by
   // reversals of the shorter side instead, where they touch fewer (closed
   // tours searched whole). Not below it: an element of a reversal costs more
@@ -94,12 +97,21 @@ class alignas(64) LocalSearcher {
     double gain = 0.0;
     HoleIndex t[5] = {};
   };
-  // Searches the sequential 3-opt steps that take out (t1, next(t1, dir)),
-  // `gain` being what that and any steps before it gained, among the first
-  // `breadth` neighbours of t2 and of t4. Makes the first that closes with a
-  // gain and returns true; else leaves the `keep` best steps that can go
-  // deeper in best[], best first.
-  bool three_opt_step(HoleIndex t1, int dir, double gain, Step* best, int keep, int breadth);
+  // Searches the sequential 3-opt steps that take out (t1, tour.next(t1,
+  // dir)), `gain` being what that and any steps before it gained, among the
+  // first `breadth` neighbours of t2 and of t4. Makes the first that closes
+  // with a gain on `tour` and returns true; else leaves the `keep` best steps
+  // that can go deeper in best[], best first. `tour` is the array route
+  // (ArrayTour) or deepen()'s trial flips over it (FlipOverlay).
+  template <class Tour>
+  bool three_opt_step(Tour& tour, HoleIndex t1, int dir, double gain, Step* best, int keep, int breadth);
+  // The array route as three_opt_step() reads and flips it.
+  struct ArrayTour {
+    LocalSearcher& s;
+    HoleIndex next(HoleIndex x, int dir) const { return s.next(x, dir); }
+    bool between(HoleIndex a, HoleIndex b, HoleIndex c, int dir) const { return s.between(a, b, c, dir); }
+    void flip(HoleIndex a, HoleIndex b, HoleIndex c, HoleIndex d) { s.flip(a, b, c, d); }
+  };
   // From a step three_opt_step left: makes it and searches on (see the .cpp).
   bool deepen(HoleIndex t1, Step step);
   // How many 3-opt steps deepen() searches below the first. Before, the
@@ -112,6 +124,8 @@ class alignas(64) LocalSearcher {
   // pla7397 at 91 s, seeds 1-3: 0.071 -> 0.088 % at 3, 0.114 % at 4. Deeper
   // chains' trial flips cost more than they find.
   static constexpr int kDeepSteps = 3;
+  // Two trial flips a step, and up to three that close the chain.
+  static_assert(2 * kDeepSteps + 3 <= FlipOverlay::kMaxFlips, "deepen's flips must fit its overlay");
   // Neighbours deepen()'s steps look at, as LKH's 5 candidates. The gain
   // carried down lets nearly every neighbour pass the gain criterion, so with
   // every hole a candidate (up to 800 holes) a step looked at all of them
@@ -122,13 +136,26 @@ class alignas(64) LocalSearcher {
   void flip(HoleIndex a, HoleIndex b, HoleIndex c, HoleIndex d);
   // How many positions flip(a, b, c, d) would rewrite.
   std::size_t flip_length(HoleIndex a, HoleIndex b, HoleIndex c, HoleIndex d) const;
-  // On routes of more than kReachFrom holes, deeper steps are tried, and
-  // undone when nothing gains, only where their flips rewrite at most
-  // kDeepenReach positions: on an array route a flip between holes near in
-  // the plane but far along the route costs up to half of it, and at 100 000
-  // holes such trial flips took 43 % of the run. On pla7397 (30 s, 3 seeds)
-  // the bound measured no better than none, so smaller routes have none.
+  // On routes of more than kReachFrom holes, deeper steps are tried only
+  // where their flips rewrite at most kDeepenReach positions. It was set when
+  // every trial flip was made on the array and undone: a flip between holes
+  // near in the plane but far along the route costs up to half of it, and at
+  // 100 000 holes such trial flips took 43 % of the run. With the long ones
+  // in the overlay (kArrayFlip) the bound keeps them out of its slower
+  // look-ups: without it, 100 000 holes at 60 s (2 threads, seeds 1 and 2)
+  // came out the same (226 572 019 and 226 593 282 against 226 587 504 and
+  // 226 595 810), at 300 s 0.013 % shorter (seed 1), d15112 and brd14051
+  // over 10 000 iterations 0.004 % shorter in 5-7 % more time. On pla7397
+  // (30 s, 3 seeds) the bound measured no better than none, so smaller routes
+  // have none.
   static constexpr std::size_t kDeepenReach = 1000;
+  // deepen()'s trial flips of up to this many positions are made on the
+  // array, and from the first longer one on in its FlipOverlay, whose
+  // look-ups cost more than the array's: at 100 000 holes (3000 iterations,
+  // seed 1, no reach bound; with a branch-free look-up since replaced by a
+  // scan that measured no slower) 1000 took 15.2 s, 300 15.9 s, 3000 16.3 s,
+  // 10 000 17.3 s; every trial flip in the overlay 17.4 s.
+  static constexpr std::size_t kArrayFlip = 1000;
   static constexpr std::size_t kReachFrom = 10000;
   std::size_t deepen_reach() const { return m_ > kReachFrom ? kDeepenReach : m_; }
   // Whether b lies on the way from a to c, going forward (dir 0) or backward.
@@ -150,7 +177,8 @@ class alignas(64) LocalSearcher {
   const Candidates& cand_;
   std::vector<HoleIndex> route_;
   std::vector<std::uint32_t> pos_;  // 4 bytes a hole: at 10^5 holes the searcher's hot data fits the cache better
-  std::vector<std::array<HoleIndex, 4>> flips_;  // deepen's flips, to undo
+  std::vector<std::array<HoleIndex, 4>> flips_;  // deepen's flips made on the array, to undo
+  FlipOverlay trial_;  // deepen's flips from its first long one on (kArrayFlip)
   std::vector<HoleIndex> queue_;
   std::vector<char> queued_;
   std::size_t head_ = 0;
@@ -160,6 +188,7 @@ class alignas(64) LocalSearcher {
   bool windowed_ = false;
   bool audit_ = false;
   std::size_t far_shift_ = kFarShift;
+  std::size_t array_flip_ = kArrayFlip;
   double gain_ = 0.0;
   std::size_t failed_audits_ = 0, audited_searches_ = 0;
 };
