@@ -134,6 +134,20 @@ TEST(local_search_test, every_move_set_keeps_a_route_never_lengthens_it_and_ends
   }
 }
 
+// A double bridge within 60 positions anywhere after position 0 (A B C D ->
+// A C B D); appends the ends of its new edges to seeds (none if its three
+// cuts did not fall apart).
+void local_double_bridge(std::vector<HoleIndex>& route, std::mt19937& rng, std::vector<HoleIndex>& seeds) {
+  const std::size_t a = 1 + rng() % (route.size() - 70);
+  std::size_t cut[3] = {a + rng() % 60, a + rng() % 60, a + rng() % 60};
+  std::sort(cut, cut + 3);
+  if (!(cut[0] < cut[1] && cut[1] < cut[2])) return;
+  std::rotate(route.begin() + static_cast<long>(cut[0] + 1), route.begin() + static_cast<long>(cut[1] + 1),
+              route.begin() + static_cast<long>(cut[2] + 1));
+  const std::size_t mid = cut[0] + (cut[2] - cut[1]);
+  for (std::size_t q : {cut[0], cut[0] + 1, mid, mid + 1, cut[2], cut[2] + 1}) seeds.push_back(route[q]);
+}
+
 // An ant's exchange against the reference, read only at the holes its search
 // was given or changed edges at (what the colony does above 10 000 holes),
 // against the same exchange read from a pass over the whole route.
@@ -157,16 +171,7 @@ TEST(local_search_test, an_ants_exchange_read_where_its_search_looked_is_the_who
         // A C B D), anywhere along the route.
         std::vector<HoleIndex> route = ref;
         std::vector<HoleIndex> seeds;
-        for (int kick = 0; kick < 1 + trial % 3; ++kick) {
-          const std::size_t a = 1 + rng() % (route.size() - 70);
-          std::size_t cut[3] = {a + rng() % 60, a + rng() % 60, a + rng() % 60};
-          std::sort(cut, cut + 3);
-          if (!(cut[0] < cut[1] && cut[1] < cut[2])) continue;
-          std::rotate(route.begin() + static_cast<long>(cut[0] + 1), route.begin() + static_cast<long>(cut[1] + 1),
-                      route.begin() + static_cast<long>(cut[2] + 1));
-          const std::size_t mid = cut[0] + (cut[2] - cut[1]);
-          for (std::size_t q : {cut[0], cut[0] + 1, mid, mid + 1, cut[2], cut[2] + 1}) seeds.push_back(route[q]);
-        }
+        for (int kick = 0; kick < 1 + trial % 3; ++kick) local_double_bridge(route, rng, seeds);
         ls.improve_from(route, Moves::ThreeOpt, seeds);
         expect_route(space, route);
         aco::detail::RouteDiff whole, near;
@@ -288,15 +293,9 @@ TEST(local_search_test, deepen_finds_the_same_moves_with_its_trial_flips_in_the_
         std::mt19937 rng(5);
         for (int kick = 0; kick < 30; ++kick) {
           // A double bridge within 60 positions, then a search from its ends.
-          const std::size_t a = 1 + rng() % (route.size() - 70);
-          std::size_t cut[3] = {a + rng() % 60, a + rng() % 60, a + rng() % 60};
-          std::sort(cut, cut + 3);
-          if (!(cut[0] < cut[1] && cut[1] < cut[2])) continue;
-          std::rotate(route.begin() + static_cast<long>(cut[0] + 1), route.begin() + static_cast<long>(cut[1] + 1),
-                      route.begin() + static_cast<long>(cut[2] + 1));
-          const std::size_t mid = cut[0] + (cut[2] - cut[1]);
           std::vector<HoleIndex> seeds;
-          for (std::size_t q : {cut[0], cut[0] + 1, mid, mid + 1, cut[2], cut[2] + 1}) seeds.push_back(route[q]);
+          local_double_bridge(route, rng, seeds);
+          if (seeds.empty()) continue;
           ls.improve_from(route, Moves::ThreeOpt, seeds);
           gain += ls.gain();
         }

@@ -15,6 +15,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <stdexcept>
+#include <utility>
 
 #include "aco/problem.h"
 
@@ -66,25 +67,13 @@ class FlipOverlay {
   void flip(HoleIndex a, HoleIndex b, HoleIndex c, HoleIndex d) {
     if (flips_ == kMaxFlips) throw std::logic_error("FlipOverlay: more flips than it holds");
     log_[static_cast<std::size_t>(flips_++)] = {a, b, c, d};
-    std::size_t pa = position(a);
-    if (position(b) != succ(pa)) {
-      std::swap(a, b);
-      std::swap(c, d);
-      pa = position(a);
-    }
-    const std::size_t pc = position(c);
-    reverse(std::min(pa, pc) + 1, std::max(pa, pc));
+    const auto [p, q] = edges_at(a, b, c, d);
+    reverse(std::min(p, q) + 1, std::max(p, q));
   }
   // As LocalSearcher::flip_length.
   std::size_t flip_length(HoleIndex a, HoleIndex b, HoleIndex c, HoleIndex d) const {
-    std::size_t pa = position(a);
-    if (position(b) != succ(pa)) {
-      std::swap(a, b);
-      std::swap(c, d);
-      pa = position(a);
-    }
-    const std::size_t pc = position(c);
-    const std::size_t inner = pa < pc ? pc - pa : pa - pc;
+    const auto [p, q] = edges_at(a, b, c, d);
+    const std::size_t inner = p < q ? q - p : p - q;
     return shortest_side_ ? std::min(inner, m_ - inner) : inner;
   }
   int flips() const { return flips_; }
@@ -100,6 +89,13 @@ class FlipOverlay {
     bool reversed;
   };
   std::size_t succ(std::size_t v) const { return v + 1 == m_ ? 0 : v + 1; }
+  // Where flip(a, b, c, d)'s two edges start, read forwards: the positions
+  // of a and c, or of b and d if b comes first.
+  std::pair<std::size_t, std::size_t> edges_at(HoleIndex a, HoleIndex b, HoleIndex c, HoleIndex d) const {
+    const std::size_t pa = position(a);
+    if (position(b) == succ(pa)) return {pa, position(c)};
+    return {position(b), position(d)};
+  }
   int piece_of(std::uint32_t p) const {
     int i = 0;
     while (p < piece_[static_cast<std::size_t>(i)].first || p > piece_[static_cast<std::size_t>(i)].last) ++i;
