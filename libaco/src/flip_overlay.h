@@ -2,10 +2,11 @@
 // An array route as a few flips would leave it, without making them: the
 // route is read through a list of pieces of the array, each read forwards or
 // backwards, and a flip only cuts and turns pieces. deepen()'s trial flips
-// (local_search.h) go here; only a chain that closes with a gain is made on
-// the array. On an array a flip costs up to half the route: at 100 000 holes
+// go here from the first that would rewrite many positions on (kArrayFlip in
+// local_search.h); only a chain that closes with a gain is made on the
+// array. On an array a flip costs up to half the route: at 100 000 holes
 // the trial flips, made and undone, were half of every position the search
-// rewrote, though deepen() only tried those of at most 1000 positions.
+// rewrote, though there deepen() tries only those of up to 1000 positions.
 //
 // A flip here costs the pieces it touches (at most 2 + 2 per flip before
 // it); a look-up scans the pieces, so it is for a handful of flips, not a
