@@ -6,7 +6,8 @@
 // local_search.h); only a chain that closes with a gain is made on the
 // array. On an array a flip costs up to half the route: at 100 000 holes
 // the trial flips, made and undone, were half of every position the search
-// rewrote, though there deepen() tries only those of up to 1000 positions.
+// rewrote (counted at 265117f), though there deepen() tries only those of up
+// to 1000 positions.
 //
 // A flip here costs the pieces it touches (at most 2 + 2 per flip before
 // it); a look-up scans the pieces, so it is for a handful of flips, not a
@@ -21,6 +22,11 @@
 #include "aco/problem.h"
 
 namespace aco::detail {
+
+// Whether position pb lies on the way from pa forward to pc, around a cycle.
+inline bool on_the_way(std::size_t pa, std::size_t pb, std::size_t pc) {
+  return pa <= pc ? (pa <= pb && pb <= pc) : (pb >= pa || pb <= pc);
+}
 
 class FlipOverlay {
  public:
@@ -60,8 +66,7 @@ class FlipOverlay {
   // As LocalSearcher::between: whether b lies on the way from a to c.
   bool between(HoleIndex a, HoleIndex b, HoleIndex c, int dir) const {
     if (dir == 1) std::swap(a, c);
-    const std::size_t pa = position(a), pb = position(b), pc = position(c);
-    return pa <= pc ? (pa <= pb && pb <= pc) : (pb >= pa || pb <= pc);
+    return on_the_way(position(a), position(b), position(c));
   }
   // As LocalSearcher::flip: removes {a, b} and {c, d} (b after a, d after c,
   // the same way round), adds {a, c} and {b, d}; and keeps it in flips().

@@ -216,8 +216,7 @@ bool LocalSearcher::try_or_opt(HoleIndex a) {
 
 bool LocalSearcher::between(HoleIndex a, HoleIndex b, HoleIndex c, int dir) const {
   if (dir == 1) std::swap(a, c);
-  const std::size_t pa = pos_[a], pb = pos_[b], pc = pos_[c];
-  return pa <= pc ? (pa <= pb && pb <= pc) : (pb >= pa || pb <= pc);
+  return on_the_way(pos_[a], pos_[b], pos_[c]);
 }
 
 void LocalSearcher::flip(HoleIndex a, HoleIndex b, HoleIndex c, HoleIndex d) {

@@ -144,8 +144,9 @@ class alignas(64) LocalSearcher {
   // in the overlay (kArrayFlip) the bound keeps them out of its slower
   // look-ups: without it, 100 000 holes at 60 s (2 threads, seeds 1 and 2)
   // came out the same (226 572 019 and 226 593 282 against 226 587 504 and
-  // 226 595 810), at 300 s 0.013 % shorter (seed 1), d15112 and brd14051
-  // over 10 000 iterations 0.004 % shorter in 5-7 % more time. On pla7397
+  // 226 595 810), at 300 s 0.013 % shorter (seed 1); over 10 000
+  // iterations d15112 0.004 % shorter in 5 % more time, brd14051 0.005 %
+  // in 10 % more (one run each, beside two of the bound's). On pla7397
   // (30 s, 3 seeds) the bound measured no better than none, so smaller routes
   // have none.
   static constexpr std::size_t kDeepenReach = 1000;
