@@ -27,6 +27,8 @@
 #include <exception>
 #include <functional>
 #include <mutex>
+#include <system_error>
+#include <thread>
 #include <vector>
 
 namespace aco::detail {
@@ -78,14 +80,25 @@ class Signal {
   std::condition_variable woken_;
 };
 
-// A team of threads kept for a whole solve: one OpenMP region, whose thread
-// 0 runs the solve and calls rounds(); the others wait for rounds to help
-// with, and join those under way. A region per stage (the candidate rows,
-// the ascent, the iterations) waited at its end for every worker, and on
-// this VM the first one often took 10-13 ms to start a worker whose CPU had
-// been idle: pcb1173's two-thread start took 45-52 ms in most runs against
-// 33-35 on one. Here the master goes on alone, and a late worker helps from
-// when it comes.
+// A team of threads kept for a whole solve: the calling thread runs the
+// solve and calls rounds(); the others wait for rounds to help with, and join
+// those under way. A region per stage (the candidate rows, the ascent, the
+// iterations) waited at its end for every worker, and on this VM the first
+// one often took 10-13 ms to start a worker whose CPU had been idle:
+// pcb1173's two-thread start took 45-52 ms in most runs against 33-35 on
+// one. Here the master goes on alone, and a late worker helps from when it
+// comes.
+//
+// The workers' OpenMP region is entered by a launcher thread, not by the
+// master: libgomp's master spins at the region's start until every new
+// thread has docked (GOMP_SPINCOUNT, 300 000 turns by default), and on this
+// VM that spin kept the one new worker from running for 3-4 ms in most
+// two-thread runs of pcb1173 (0.1 ms with GOMP_SPINCOUNT=0), all of it before
+// the solve began. The launcher is the region's thread 0 and a worker
+// itself; whatever it waits for there, nobody waits for it. (pcb1173, 200
+// iterations on two threads, seeds 1-15 in pairs: 166.3 ms on average before,
+// 162.8 after, faster in 14 pairs. The worker itself still comes up 0.15-3.3
+// ms after the launch, as its CPU wakes; the master works meanwhile.)
 class Team {
  public:
   // Runs main(team) on this thread, with threads - 1 workers beside it.
@@ -96,21 +109,24 @@ class Team {
       main(team);
       return;
     }
-    std::exception_ptr error;
-#pragma omp parallel num_threads(team.threads_)
-    {
-      if (omp_get_thread_num() == 0) {
-        try {
-          main(team);
-        } catch (...) {
-          error = std::current_exception();
-        }
-        team.closed_.store(true);
-        team.posted_.notify();
-      } else {
-        team.serve(omp_get_thread_num());
-      }
+    // Without a launcher (no thread to be had) the master does every slot itself.
+    std::thread launcher;
+    try {
+      launcher = std::thread([&team] {
+#pragma omp parallel num_threads(team.threads_ - 1)
+        team.serve(omp_get_thread_num() + 1);
+      });
+    } catch (const std::system_error&) {
     }
+    std::exception_ptr error;
+    try {
+      main(team);
+    } catch (...) {
+      error = std::current_exception();
+    }
+    team.closed_.store(true);
+    team.posted_.notify();
+    if (launcher.joinable()) launcher.join();
     if (error) std::rethrow_exception(error);
   }
 
