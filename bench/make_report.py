@@ -167,11 +167,16 @@ def main():
               "and the same for `acs` at 200 iterations: the same iterations on 1 and 2 threads, median wall time of "
               "the solver (its whole run, candidate lists included); the tours are identical (same seed). Each seed "
               "runs on 1 and then on 2 threads, so both see the machine in the same state. A focused iteration on "
-              "pcb1173 lasts about 1.5 ms on one thread: in 200 of them (0.3 s) the solver's start weighs: the "
-              "candidate lists and the first route took 35-43 ms on one thread and 34-49 ms on two (10 runs each, at "
-              "a58c47c). Two threads grow the ascent's 100 spanning trees in two strips (22-23 ms against 24-29 ms "
-              "on one); the rest of the start is one thread's, and on this VM the second CPU often joins a few "
-              "milliseconds late. 2000 iterations are nearer the work of 200 whole-route ACS iterations.\n")
+              "pcb1173 lasts about 1.5 ms on one thread: in 200 of them (0.3 s) the solver's start weighs. By timing "
+              "instrumentation at 25c8cc1 and 21f63d6 (not committed), the candidate lists and the first route took about 30 ms on one "
+              "thread, 23.6 of them the ascent's 100 spanning trees; on two threads about 20-22 ms, the ascent 14.7 ms "
+              "(the two strips' trees 12.4-12.7 ms each, the joins and steps between them 1.8 ms on one thread), and "
+              "the local search of the first route (2.2 ms) is one thread's. The second thread comes up 0.15-3.3 ms "
+              "after it is launched, as its CPU wakes; the first thread goes on meanwhile. Within the iterations the "
+              "ants of a round vary (3 us to 1.2 ms, nearly all of it local search), and over 200 rounds the worker "
+              "done first waited about 5 ms in all for the other's last ant; ordering the ants by their true cost "
+              "would have saved at most 3.7 ms of it. 2000 iterations are nearer the work of 200 whole-route ACS "
+              "iterations.\n")
         w(f"On {title}:\n")
         w("| algorithm | iterations | threads | median wall s | speedup | efficiency |")
         w("|---|---:|---:|---:|---:|---:|")
