@@ -1,11 +1,15 @@
 // The colony's one parallel scaffold (libaco/src/parallel.h): each round's
 // slots run exactly once, between() runs after all of them and before any of
 // the next round's, and failures stop the team, on any number of workers; a
-// team kept for a whole solve does so job after job.
+// team kept for a whole solve does so job after job, the solve on the
+// calling thread and each worker on a thread of its own.
 // scripts/tsan runs these under ThreadSanitizer too.
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <chrono>
+#include <mutex>
+#include <thread>
 #include <memory>
 #include <stdexcept>
 #include <vector>
@@ -121,6 +125,38 @@ TEST(parallel_test, a_team_runs_job_after_job_each_round_whole_and_each_chunk_on
     });
     EXPECT_EQ(wrong.load(), 0) << threads << " threads";
     EXPECT_EQ(jobs_done, 400);
+  }
+}
+
+TEST(parallel_test, the_solve_runs_on_the_calling_thread_and_each_worker_on_a_thread_of_its_own) {
+  for (const int threads : {2, 3, 5}) {
+    const std::thread::id caller = std::this_thread::get_id();
+    std::mutex mutex;
+    std::vector<std::thread::id> thread_of(static_cast<std::size_t>(threads));
+    std::vector<double> busy;
+    aco::detail::Team::run(threads, [&](aco::detail::Team& team) {
+      EXPECT_EQ(std::this_thread::get_id(), caller);
+      // Every slot waits until each has been taken, so each worker holds
+      // one: the workers come up beside the solve, or this waits 10 s and fails.
+      std::atomic<int> arrived{0};
+      team.rounds(
+          threads, busy,
+          [&](int, int worker) {
+            {
+              std::lock_guard<std::mutex> lock(mutex);
+              thread_of[static_cast<std::size_t>(worker)] = std::this_thread::get_id();
+            }
+            ++arrived;
+            const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+            while (arrived.load() < threads && std::chrono::steady_clock::now() < give_up) std::this_thread::yield();
+          },
+          [] { return false; });
+    });
+    EXPECT_EQ(thread_of[0], caller) << threads << " threads";
+    for (int a = 0; a < threads; ++a) {
+      EXPECT_NE(thread_of[static_cast<std::size_t>(a)], std::thread::id()) << "worker " << a << " of " << threads << " never came";
+      for (int b = 0; b < a; ++b) EXPECT_NE(thread_of[static_cast<std::size_t>(a)], thread_of[static_cast<std::size_t>(b)]);
+    }
   }
 }
 
