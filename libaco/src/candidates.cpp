@@ -208,6 +208,11 @@ class SpanningForest {
     // tree's first), the terminals at or below it, its tree's first hole, and
     // its degree in the paths between terminals, or kJoint where a chain ends.
     std::vector<HoleIndex> order;
+    // Only when split: by hole, the hole whose edge it was last offered
+    // (offer_edge's other end), and the hole it hangs from once spanned. The
+    // chains' passes walk up the trees by it, one load a step where finding
+    // the edge's other end took three dependent ones.
+    std::vector<HoleIndex> offer_from, parent;
     std::vector<std::uint32_t> via, below;
     std::vector<HoleIndex> first;
     std::vector<std::uint8_t> degree;
@@ -220,6 +225,8 @@ class SpanningForest {
       heap_at.assign(n, kOutside);
       if (!split) return;
       via.assign(n, kOutside);
+      offer_from.assign(n, 0);
+      parent.assign(n, 0);
       below.assign(n, 0);
       first.assign(n, 0);
       degree.assign(n, 0);
@@ -241,6 +248,7 @@ class SpanningForest {
           const HoleIndex h = pop();
           if (split) {
             via[h] = static_cast<std::uint32_t>(grown.size());
+            parent[h] = offer_from[h];
             order.push_back(h);
           }
           grown.push_back({offer_cost[h], offer_edge[h]});
@@ -249,7 +257,7 @@ class SpanningForest {
         }
       }
     }
-    HoleIndex up(const SpanningForest& f, HoleIndex h) const { return f.other_end(grown[via[h]].second, h); }
+    HoleIndex up(HoleIndex h) const { return parent[h]; }
     // Whether h's edge up lies on a path between two terminals of its tree:
     // it has some of them below it, but not all.
     bool on_path(HoleIndex h) const { return via[h] != kOutside && below[h] > 0 && below[h] < below[first[h]]; }
@@ -260,13 +268,13 @@ class SpanningForest {
         degree[h] = 0;
       }
       for (auto h = order.rbegin(); h != order.rend(); ++h) {
-        if (via[*h] != kOutside) below[up(f, *h)] += below[*h];
+        if (via[*h] != kOutside) below[up(*h)] += below[*h];
       }
       for (HoleIndex h : order) {
-        first[h] = via[h] == kOutside ? h : first[up(f, h)];
+        first[h] = via[h] == kOutside ? h : first[up(h)];
         if (!on_path(h)) continue;
         degree[h] = static_cast<std::uint8_t>(std::min(3, degree[h] + 1));
-        const HoleIndex u = up(f, h);
+        const HoleIndex u = up(h);
         degree[u] = static_cast<std::uint8_t>(std::min(3, degree[u] + 1));
       }
       // A chain ends at a terminal, where paths branch, and at the top of
@@ -278,8 +286,8 @@ class SpanningForest {
       for (HoleIndex h : order) {
         if (degree[h] != kJoint || !on_path(h)) continue;
         Priced longest = grown[via[h]];
-        HoleIndex x = up(f, h);
-        for (; degree[x] != kJoint; x = up(f, x)) longest = std::max(longest, grown[via[x]]);
+        HoleIndex x = up(h);
+        for (; degree[x] != kJoint; x = up(x)) longest = std::max(longest, grown[via[x]]);
         chains.push_back({longest, h, x});
       }
     }
@@ -296,6 +304,7 @@ class SpanningForest {
       const double* p = pi.data();
       const Arc* arc = f.arcs_.data() + f.first_arc_[h];
       const Arc* end = f.arcs_.data() + f.arc_end_[h];
+      HoleIndex* const from = offer_from.empty() ? nullptr : offer_from.data();
       for (; arc != end; ++arc) {
         const HoleIndex to = arc->to;
         // cost(arc->edge, pi), read from the arc: the same sum, in the same order.
@@ -303,6 +312,7 @@ class SpanningForest {
         if (!(c < offer_cost[to] || (c == offer_cost[to] && arc->edge < offer_edge[to]))) continue;
         offer_cost[to] = c;
         offer_edge[to] = arc->edge;
+        if (from != nullptr) from[to] = h;
         if (heap_at[to] == kOutside) {
           heap.push_back(to);
           heap_at[to] = static_cast<std::uint32_t>(heap.size() - 1);
