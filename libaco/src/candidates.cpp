@@ -175,7 +175,6 @@ class SpanningForest {
   using Priced = std::pair<double, std::uint32_t>;
   void mark(std::uint32_t e) { in_tree_[e / 64] |= std::uint64_t{1} << (e % 64); }
   void unmark(std::uint32_t e) { in_tree_[e / 64] &= ~(std::uint64_t{1} << (e % 64)); }
-  HoleIndex other_end(std::uint32_t e, HoleIndex h) const { return edges_[e].a == h ? edges_[e].b : edges_[e].a; }
   // Summed as (length + pi[a]) + pi[b], a < b, whichever end is reached first:
   // the same bits from either side.
   double cost(std::uint32_t e, const std::vector<double>& pi) const {
