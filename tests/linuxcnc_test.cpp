@@ -407,7 +407,7 @@ TEST_P(ReorderedProgram, rs274_reads_the_same_holes_tools_and_depths_and_no_long
 
 
 INSTANTIATE_TEST_SUITE_P(real_gcode, ReorderedProgram, ::testing::ValuesIn(testutil::real_gcode_programs()),
-                         [](const auto& info) { return testutil::file_param_name(info.param); });
+                         [](const auto& test_param) { return testutil::file_param_name(test_param.param); });
 
 // Issue 23: GRBL and Marlin. GRBL's own parser (tests/grbl-sim, built by the
 // gvalidate target) must accept every line of every grbl program; Marlin
@@ -560,7 +560,9 @@ TEST_P(HobbyDialect, reordered_for_grbl_and_marlin_drills_the_same_holes) {
     ASSERT_EQ(r.code, 0) << what << "\n" << r.err;
     std::string text = without_percent_lines(testutil::slurp(out));  // --keep-style keeps the input's
     const bool marlin = mode.find("marlin") != std::string::npos;
-    if (mode.find("grbl") != std::string::npos) EXPECT_EQ(grbl_refusal(text), "") << what;
+    if (mode.find("grbl") != std::string::npos) {
+      EXPECT_EQ(grbl_refusal(text), "") << what;
+    }
     if (marlin) {
       EXPECT_EQ(marlin_refusal(text), "") << what;
       text = marlin_for_rs274(text);
@@ -589,7 +591,7 @@ TEST_P(HobbyDialect, reordered_for_grbl_and_marlin_drills_the_same_holes) {
 }
 
 INSTANTIATE_TEST_SUITE_P(hobby, HobbyDialect, ::testing::ValuesIn(programs_for_hobby_dialects()),
-                         [](const auto& info) { return testutil::file_param_name(info.param); });
+                         [](const auto& test_param) { return testutil::file_param_name(test_param.param); });
 
 // A hobby post's G1 travel is travel only above the part: a G1 in X/Y at
 // the part's depth is a cut, refused naming its line; a program whose end

@@ -61,7 +61,7 @@ TEST_P(RealProgram, reads_the_holes_rs274_drills_in_order_with_tool_and_depth) {
 }
 
 INSTANTIATE_TEST_SUITE_P(real_gcode, RealProgram, ::testing::ValuesIn(testutil::real_gcode_programs()),
-                         [](const auto& info) { return testutil::file_param_name(info.param); });
+                         [](const auto& test_param) { return testutil::file_param_name(test_param.param); });
 
 namespace {
 std::vector<const gcode::ProgramHole*> all_holes(const gcode::DrillingProgram& p) {
@@ -172,7 +172,9 @@ TEST(program_test, a_reordered_program_reads_back_to_the_same_holes_in_both_styl
       EXPECT_NEAR(back[i]->cycle.r_mm, want[i]->cycle.r_mm, 1e-3) << keep;
       EXPECT_EQ(back[i]->cycle.code, 73);
     }
-    if (keep) EXPECT_THAT(out.str(), ::testing::HasSubstr("(HEATSUNK_DRILL)\n"));
+    if (keep) {
+      EXPECT_THAT(out.str(), ::testing::HasSubstr("(HEATSUNK_DRILL)\n"));
+    }
   }
 }
 
