@@ -214,6 +214,20 @@ TEST(solver_test, stop_rules) {
   EXPECT_EQ(aco::solve(p, params).stop_reason, "stalled");
 }
 
+TEST(solver_test, reading_the_input_comes_off_the_time_limit_of_the_whole_run) {
+  EXPECT_EQ(app::time_left(0.0, 2.5), 0.0);  // no limit stays none
+  EXPECT_DOUBLE_EQ(app::time_left(5.0, 0.25), 4.75);
+  EXPECT_DOUBLE_EQ(app::time_left(5.0, -1.0), 5.0);
+  EXPECT_DOUBLE_EQ(app::time_left(1.0, 3.0), 0.01);  // used up: one iteration's worth, not none
+  aco::Problem p = random_problem(300, 2);
+  aco::Params params = quick(aco::Algorithm::FocusedAcs);
+  params.iterations = 0;
+  params.time_limit_s = app::time_left(1.0, 3.0);
+  const aco::Solution late = aco::solve(p, params);
+  EXPECT_EQ(late.stop_reason, "time limit");
+  EXPECT_GE(late.iterations, 1);
+}
+
 TEST(solver_test, degenerate_inputs) {
   aco::Params params = quick(aco::Algorithm::MaxMinAntSystem);
   for (std::size_t n : {0u, 1u, 2u, 3u, 5u}) {

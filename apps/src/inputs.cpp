@@ -97,4 +97,9 @@ Job load_job(const std::vector<std::string>& paths, const InputOptions& options)
   return job;
 }
 
+double time_left(double limit_s, double spent_s) {
+  if (limit_s <= 0.0) return 0.0;
+  return std::max(0.01, limit_s - std::max(0.0, spent_s));
+}
+
 }  // namespace app

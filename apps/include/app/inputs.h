@@ -34,4 +34,9 @@ struct Job {
 // Throws UserError for a drilling program among other inputs: a program is reordered alone.
 Job load_job(const std::vector<std::string>& paths, const InputOptions& options);
 
+// What a --time-limit of `limit_s` for the whole run leaves the solver once
+// `spent_s` went on reading the inputs: 0 (no limit) stays 0, and a limit
+// already used up leaves 0.01 s, one iteration's worth at most.
+double time_left(double limit_s, double spent_s);
+
 }  // namespace app
