@@ -207,11 +207,11 @@ class SpanningForest {
     // tree's first), the terminals at or below it, its tree's first hole, and
     // its degree in the paths between terminals, or kJoint where a chain ends.
     std::vector<HoleIndex> order;
-    // Only when split: by hole, the hole whose edge it was last offered
-    // (offer_edge's other end), and the hole it hangs from once spanned. The
-    // chains' passes walk up the trees by it, one load a step where finding
-    // the edge's other end took three dependent ones.
-    std::vector<HoleIndex> offer_from, parent;
+    // Only when split: by hole, the hole its offer comes from (offer_edge's
+    // other end). A spanned hole is offered nothing more, so from then on it
+    // is the hole it hangs from: the chains' passes walk up the trees by it,
+    // one load a step where finding the edge's other end took three dependent ones.
+    std::vector<HoleIndex> offer_from;
     std::vector<std::uint32_t> via, below;
     std::vector<HoleIndex> first;
     std::vector<std::uint8_t> degree;
@@ -225,7 +225,6 @@ class SpanningForest {
       if (!split) return;
       via.assign(n, kOutside);
       offer_from.assign(n, 0);
-      parent.assign(n, 0);
       below.assign(n, 0);
       first.assign(n, 0);
       degree.assign(n, 0);
@@ -247,7 +246,6 @@ class SpanningForest {
           const HoleIndex h = pop();
           if (split) {
             via[h] = static_cast<std::uint32_t>(grown.size());
-            parent[h] = offer_from[h];
             order.push_back(h);
           }
           grown.push_back({offer_cost[h], offer_edge[h]});
@@ -256,7 +254,7 @@ class SpanningForest {
         }
       }
     }
-    HoleIndex up(HoleIndex h) const { return parent[h]; }
+    HoleIndex up(HoleIndex h) const { return offer_from[h]; }
     // Whether h's edge up lies on a path between two terminals of its tree:
     // it has some of them below it, but not all.
     bool on_path(HoleIndex h) const { return via[h] != kOutside && below[h] > 0 && below[h] < below[first[h]]; }
