@@ -3,6 +3,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <sstream>
 
@@ -136,4 +137,61 @@ TEST(bench_test, bad_grid_values_are_usage_errors) {
     EXPECT_EQ(testutil::count_lines(r.err), 1) << args << ": " << r.err;
     EXPECT_FALSE(std::filesystem::exists(t / "r.csv"));
   }
+}
+
+namespace {
+
+// The NODE_COORD_SECTION of a TSPLIB file, and its EDGE_WEIGHT_TYPE.
+std::vector<std::pair<double, double>> tsplib_points(const std::string& text, std::string* metric) {
+  std::vector<std::pair<double, double>> points;
+  std::istringstream in(text);
+  bool coords = false;
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind("EDGE_WEIGHT_TYPE", 0) == 0) *metric = line.substr(line.find(':') + 2);
+    if (line.rfind("NODE_COORD_SECTION", 0) == 0) {
+      coords = true;
+    } else if (coords && line != "EOF") {
+      std::istringstream row(line);
+      int id = 0;
+      double x = 0, y = 0;
+      if (row >> id >> x >> y) points.emplace_back(x, y);
+    }
+  }
+  return points;
+}
+
+}  // namespace
+
+TEST(bench_test, make_tiled_lays_copies_of_the_board_side_by_side_with_the_gap_between) {
+  testutil::TempDir t;
+  // A board away from the origin, with fractions, in pla7397's metric.
+  testutil::spit(t / "board.tsp",
+                 "NAME : board\nTYPE : TSP\nDIMENSION : 5\nEDGE_WEIGHT_TYPE : CEIL_2D\nNODE_COORD_SECTION\n"
+                 "1 10.5 20\n2 30 25.25\n3 12 40\n4 29.75 39\n5 20 30\nEOF\n");
+  auto r = testutil::run("python3 " + shell_quote(testutil::source_dir() + "/bench/make_tiled.py") + " " +
+                         shell_quote(t / "board.tsp") + " " + shell_quote(t / "panel.tsp") + " 3 2 100");
+  ASSERT_EQ(r.code, 0) << r.err;
+  std::string board_metric, panel_metric;
+  const auto b = tsplib_points(slurp(t / "board.tsp"), &board_metric);
+  const auto p = tsplib_points(slurp(t / "panel.tsp"), &panel_metric);
+  ASSERT_EQ(b.size(), 5u);
+  ASSERT_EQ(p.size(), 6 * b.size());
+  EXPECT_EQ(panel_metric, "CEIL_2D");
+  EXPECT_THAT(slurp(t / "panel.tsp"), ::testing::HasSubstr("DIMENSION : 30\n"));
+  // Copy (i, j) is the board moved to the origin, then i board widths plus
+  // gaps right and j heights plus gaps up: the board is 19.5 x 20.
+  std::size_t k = 0;
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 2; ++j) {
+      for (auto [x, y] : b) {
+        EXPECT_NEAR(p[k].first, x - 10.5 + i * (19.5 + 100), 1e-9) << k;
+        EXPECT_NEAR(p[k].second, y - 20 + j * (20 + 100), 1e-9) << k;
+        ++k;
+      }
+    }
+  }
+  // The solver reads it as one instance.
+  auto solved = testutil::acodrill_run("tsp " + shell_quote(t / "panel.tsp") + " --iterations 2 -q");
+  ASSERT_EQ(solved.code, 0) << solved.err;
+  EXPECT_THAT(solved.out, ::testing::StartsWith("length "));
 }
