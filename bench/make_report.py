@@ -115,7 +115,7 @@ def main():
           "leaves out the moves between copies. Focused ACO, where measured: the author's public code built "
           "outside the project (`FACO_BIN`, see `scripts/benchmarks`), its default settings, 2 threads, stopped by "
           "the same whole-process wall time, which it checks once an iteration (so it may run over by up to an "
-          "iteration: 1-2 s at 100 000 holes). LKH-3 cannot be run on this machine.\n")
+          "iteration: up to 1.5 s at 100 000 holes). LKH-3 cannot be run on this machine.\n")
         by = {}
         for r in rows(path):
             solver = r.get("solver", "acodrill")
