@@ -197,7 +197,11 @@ def main():
               "after it is launched, as its CPU wakes; the first thread goes on meanwhile. Within the iterations the "
               "ants of a round vary (3 us to 1.2 ms, nearly all of it local search), and over 200 rounds the worker "
               "done first waited about 5 ms in all for the other's last ant; ordering the ants by their true cost "
-              "would have saved at most 3.7 ms of it. 2000 iterations are nearer the work of 200 whole-route ACS "
+              "would have saved at most 3.7 ms of it. The tables below were measured on a day this VM ran the same "
+              "solve 1.8 times slower; timed then the same way (287da5a, the same solver), the start took 53 ms on one "
+              "thread and 37-43 ms on two (the ascent 40 against 25-31 ms, the first route 4.4-6 ms on one thread "
+              "either way), the second thread came up 0.16-3.6 ms after its launch, and over 200 rounds the worker "
+              "done first waited 19-28 ms in all for the other's last ant. 2000 iterations are nearer the work of 200 whole-route ACS "
               "iterations.\n")
         w(f"On {title}:\n")
         w("| algorithm | iterations | threads | median wall s | speedup | efficiency |")
