@@ -21,14 +21,17 @@ def main():
     gap = float(sys.argv[5]) if len(sys.argv) == 6 else 20000.0
     name, metric, points, in_coords = "tiled", "EUC_2D", [], False
     with open(src) as f:
-        for line in f:
+        for number, line in enumerate(f, 1):
             words = line.replace(":", " : ", 1).split()
             if not words:
                 continue
             if in_coords:
                 if words[0] == "EOF":
                     break
-                points.append((float(words[1]), float(words[2])))
+                try:
+                    points.append((float(words[1]), float(words[2])))
+                except (IndexError, ValueError):
+                    sys.exit(f"{src}:{number}: expected 'number x y'")
             elif words[0] == "NAME":
                 name = words[-1]
             elif words[0] == "EDGE_WEIGHT_TYPE":
