@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <sstream>
 
+#include "formats/readers.h"
 #include "test_util.h"
 
 using testutil::shell_quote;
@@ -139,29 +140,6 @@ TEST(bench_test, bad_grid_values_are_usage_errors) {
   }
 }
 
-namespace {
-
-// The NODE_COORD_SECTION of a TSPLIB file, and its EDGE_WEIGHT_TYPE.
-std::vector<std::pair<double, double>> tsplib_points(const std::string& text, std::string* metric) {
-  std::vector<std::pair<double, double>> points;
-  std::istringstream in(text);
-  bool coords = false;
-  for (std::string line; std::getline(in, line);) {
-    if (line.rfind("EDGE_WEIGHT_TYPE", 0) == 0) *metric = line.substr(line.find(':') + 2);
-    if (line.rfind("NODE_COORD_SECTION", 0) == 0) {
-      coords = true;
-    } else if (coords && line != "EOF") {
-      std::istringstream row(line);
-      int id = 0;
-      double x = 0, y = 0;
-      if (row >> id >> x >> y) points.emplace_back(x, y);
-    }
-  }
-  return points;
-}
-
-}  // namespace
-
 TEST(bench_test, make_tiled_lays_copies_of_the_board_side_by_side_with_the_gap_between) {
   testutil::TempDir t;
   // A board away from the origin, with fractions, in pla7397's metric.
@@ -171,21 +149,22 @@ TEST(bench_test, make_tiled_lays_copies_of_the_board_side_by_side_with_the_gap_b
   auto r = testutil::run("python3 " + shell_quote(testutil::source_dir() + "/bench/make_tiled.py") + " " +
                          shell_quote(t / "board.tsp") + " " + shell_quote(t / "panel.tsp") + " 3 2 100");
   ASSERT_EQ(r.code, 0) << r.err;
-  std::string board_metric, panel_metric;
-  const auto b = tsplib_points(slurp(t / "board.tsp"), &board_metric);
-  const auto p = tsplib_points(slurp(t / "panel.tsp"), &panel_metric);
+  // Both read by the project's own TSPLIB reader, which checks DIMENSION against the nodes.
+  const formats::LoadedHoles board = formats::parse_tsplib(t / "board.tsp", slurp(t / "board.tsp"));
+  const formats::LoadedHoles panel = formats::parse_tsplib(t / "panel.tsp", slurp(t / "panel.tsp"));
+  const auto& b = board.holes;
+  const auto& p = panel.holes;
   ASSERT_EQ(b.size(), 5u);
   ASSERT_EQ(p.size(), 6 * b.size());
-  EXPECT_EQ(panel_metric, "CEIL_2D");
-  EXPECT_THAT(slurp(t / "panel.tsp"), ::testing::HasSubstr("DIMENSION : 30\n"));
+  EXPECT_EQ(formats::tsplib_metric(panel), aco::Metric::TsplibCeil2d);
   // Copy (i, j) is the board moved to the origin, then i board widths plus
   // gaps right and j heights plus gaps up: the board is 19.5 x 20.
   std::size_t k = 0;
   for (int i = 0; i < 3; ++i) {
     for (int j = 0; j < 2; ++j) {
-      for (auto [x, y] : b) {
-        EXPECT_NEAR(p[k].first, x - 10.5 + i * (19.5 + 100), 1e-9) << k;
-        EXPECT_NEAR(p[k].second, y - 20 + j * (20 + 100), 1e-9) << k;
+      for (const aco::Hole& h : b) {
+        EXPECT_NEAR(p[k].center.x, h.center.x - 10.5 + i * (19.5 + 100), 1e-9) << k;
+        EXPECT_NEAR(p[k].center.y, h.center.y - 20 + j * (20 + 100), 1e-9) << k;
         ++k;
       }
     }
