@@ -201,7 +201,14 @@ def main():
               "solve 1.8 times slower; timed then the same way (287da5a, the same solver), the start took 53 ms on one "
               "thread and 37-43 ms on two (the ascent 40 against 25-31 ms, the first route 4.4-6 ms on one thread "
               "either way), the second thread came up 0.16-3.6 ms after its launch, and over 200 rounds the worker "
-              "done first waited 19-28 ms in all for the other's last ant. 2000 iterations are nearer the work of 200 whole-route ACS "
+              "done first waited 19-28 ms in all for the other's last ant. Timed ant by ant at 9f910e4 (not committed; "
+              "2000 iterations on one pinned thread, seeds 1-3), building an ant's route is 3.0-3.3 % of the ants' work "
+              "and its local search the rest; dealing those times out round by round to two workers as the team deals "
+              "them (each free worker takes the next ant) leaves the one done first waiting 5.0-5.3 % of the ideal "
+              "two-thread wall with the ants in the order they have (largest bound first), 3.6-3.9 % if they went by "
+              "the new edges each ant made (known only once built: every route built before any search), and 1.4 % in "
+              "the best order, known only afterwards. With rounds of 10 ants whose searches vary this much, about that share of "
+              "two threads' time goes to waiting. 2000 iterations are nearer the work of 200 whole-route ACS "
               "iterations.\n")
         w(f"On {title}:\n")
         w("| algorithm | iterations | threads | median wall s | speedup | efficiency |")
