@@ -118,10 +118,8 @@ def main():
           "iteration: up to 1.5 s at 100 000 holes). LKH-3 cannot be run on this machine.\n")
         by = {}
         for r in rows(path):
-            solver = r.get("solver", "acodrill")
-            above = r.get("above_reference_pct", r.get("bhh_excess_pct"))
-            by.setdefault((r["instance"], int(r["n"]), r["budget_s"]), {}).setdefault(solver, []).append(
-                (float(above), float(r["wall_s"]), int(r["peak_rss_mb"])))
+            by.setdefault((r["instance"], int(r["n"]), r["budget_s"]), {}).setdefault(r["solver"], []).append(
+                (float(r["above_reference_pct"]), float(r["wall_s"]), int(r["peak_rss_mb"])))
         has_faco = any("faco" in v for v in by.values())
         head = "| instance | holes | budget s | median above the reference | min | max |"
         line = "|---|---:|---:|---:|---:|---:|"
