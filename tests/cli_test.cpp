@@ -466,3 +466,25 @@ TEST(cli_test, tsp_lengths_use_the_instances_own_rounding) {
     EXPECT_EQ(r.out, std::string("length ") + length + "\n") << type;
   }
 }
+
+// Issue 47: the same file given twice (or under another name) is one input:
+// read once, named once in the program, with a warning.
+TEST(cli_test, a_file_given_twice_is_read_once_with_a_warning) {
+  TempDir t;
+  const std::string drl = data("kicad/pic_programmer-mm-decimal.drl");
+  const std::string nc_once = t / "once.nc", nc_twice = t / "twice.nc";
+  auto once = acodrill_run("plan " + q(drl) + " -o " + q(nc_once) + " --iterations 5");
+  ASSERT_EQ(once.code, 0) << once.err;
+  std::filesystem::create_symlink(drl, t / "alias.drl");
+  auto twice = acodrill_run("plan " + q(drl) + " " + q(t / "alias.drl") + " " + q(drl) + " -o " + q(nc_twice) + " --iterations 5");
+  ASSERT_EQ(twice.code, 0) << twice.err;
+  EXPECT_THAT(twice.err, ::testing::HasSubstr("warning: " + t / "alias.drl" + " is given more than once; it is read once"));
+  EXPECT_THAT(twice.err, ::testing::HasSubstr("warning: " + drl + " is given more than once; it is read once"));
+  EXPECT_EQ(slurp(nc_once), slurp(nc_twice)) << "the same program, the file named once in its header";
+  // verify --holes takes the same list.
+  auto v = acodrill_run("verify " + q(nc_twice) + " --holes " + q(drl) + " " + q(drl));
+  EXPECT_EQ(v.code, 0) << v.out << v.err;
+  // Quiet stays quiet.
+  auto quiet = acodrill_run("plan " + q(drl) + " " + q(drl) + " -o " + q(nc_twice) + " --iterations 5 --quiet");
+  EXPECT_EQ(quiet.err, "");
+}

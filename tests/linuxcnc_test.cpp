@@ -743,3 +743,109 @@ TEST(linuxcnc_test, panels_and_drills_that_wear_out) {
                                    " --panel 3x2 --pitch 60,40 -q --slots skip");
   EXPECT_EQ(vw.code, 0) << vw.out;
 }
+
+// Issue 47: hobby boards drilled the way hobbyists drill them. rs274 runs
+// the program; each downward feed at one XY is a stroke, counted per hole.
+namespace {
+
+struct Stroke {
+  double x, y, from_z, to_z;  // mm
+};
+
+std::vector<Stroke> strokes_of(const std::string& program_path) {
+  testutil::TempDir t;
+  const std::string prog = testutil::slurp(program_path);
+  std::string table;
+  for (int n = 1; n <= 40; ++n) table += "T" + std::to_string(n) + " P" + std::to_string(n) + " Z0 D1\n";
+  testutil::spit(t / "tool.tbl", table);
+  auto r = testutil::run("cd " + testutil::shell_quote(t.path()) + " && rs274 -t tool.tbl -g " + testutil::shell_quote(program_path));
+  EXPECT_EQ(r.code, 0) << r.err;
+  static const std::regex call(R"((STRAIGHT_TRAVERSE|STRAIGHT_FEED)\(([^)]*)\))");
+  std::vector<Stroke> out;
+  double x = 0, y = 0, z = 0;
+  std::istringstream in(r.out);
+  for (std::string line; std::getline(in, line);) {
+    std::smatch m;
+    if (!std::regex_search(line, m, call)) continue;
+    std::vector<double> v;
+    std::istringstream args(m[2]);
+    for (std::string a; std::getline(args, a, ',');) v.push_back(std::stod(a));
+    if (m[1] == "STRAIGHT_FEED" && std::fabs(v[0] - x) < 1e-9 && std::fabs(v[1] - y) < 1e-9 && v[2] < z) {
+      out.push_back({v[0], v[1], z, v[2]});
+    }
+    x = v[0];
+    y = v[1];
+    z = v[2];
+  }
+  return out;
+}
+
+// Strokes per drilled position.
+std::map<std::pair<long long, long long>, int> strokes_per_hole(const std::vector<Stroke>& strokes) {
+  std::map<std::pair<long long, long long>, int> n;
+  for (const Stroke& s : strokes) ++n[{std::llround(s.x * 1000), std::llround(s.y * 1000)}];
+  return n;
+}
+
+}  // namespace
+
+TEST(linuxcnc_test, boards_on_the_router_are_drilled_in_one_stroke_from_close_above) {
+  ASSERT_TRUE(have_rs274());
+  testutil::TempDir t;
+  const std::string nc = t / "p.nc", sheet = t / "s.html";
+  // KiCad's video board: 1720 holes, 11 drills, on the desktop router (GRBL).
+  const std::string board = testutil::data("kicad/video-mm-decimal.drl");
+  auto r = testutil::acodrill_run("plan " + testutil::shell_quote(board) + " --machine router -q --iterations 5 -o " +
+                                  testutil::shell_quote(nc) + " --setup-sheet " + testutil::shell_quote(sheet));
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::string prog = testutil::slurp(nc);
+  EXPECT_EQ(grbl_refusal(prog), "");
+  const std::vector<Stroke> strokes = strokes_of(nc);
+  const auto per_hole = strokes_per_hole(strokes);
+  EXPECT_EQ(per_hole.size(), 1720u);
+  for (const auto& [at, n] : per_hole) EXPECT_EQ(n, 1) << "hole at " << at.first << "," << at.second << " is pecked";
+  for (const Stroke& s : strokes) {
+    // The feed starts at the R plane, a millimetre over the board, and goes through it (1.6 mm).
+    EXPECT_LE(s.from_z, 1.0 + 1e-9);
+    EXPECT_LT(s.to_z, -1.6);
+  }
+  // Carbide drills: spindle speeds within the router's 10000 rpm.
+  static const std::regex speed(R"(\bS(\d+))");
+  for (std::sregex_iterator it(prog.begin(), prog.end(), speed), end; it != end; ++it) {
+    EXPECT_LE(std::stoi((*it)[1].str()), 10000);
+  }
+  // The sheet names only what a GRBL program holds: no O-number.
+  EXPECT_EQ(testutil::slurp(sheet).find("O1001"), std::string::npos);
+
+  // A machine profile's r_plane_mm is where feeds begin.
+  testutil::spit(t / "m.json", R"({"name": "close router", "dialect": "grbl", "tool_changer": false, "max_rpm": 10000,
+                                   "r_plane_mm": 0.5})");
+  r = testutil::acodrill_run("plan " + testutil::shell_quote(board) + " --machine " + testutil::shell_quote(t / "m.json") +
+                             " -q --iterations 5 -o " + testutil::shell_quote(nc));
+  ASSERT_EQ(r.code, 0) << r.err;
+  for (const Stroke& s : strokes_of(nc)) EXPECT_LE(s.from_z, 0.5 + 1e-9);
+  testutil::spit(t / "bad.json", R"({"r_plane_mm": 0})");
+  r = testutil::acodrill_run("plan " + testutil::shell_quote(board) + " --machine " + testutil::shell_quote(t / "bad.json") +
+                             " -q -o " + testutil::shell_quote(t / "never.nc"));
+  EXPECT_EQ(r.code, 2);
+  EXPECT_THAT(r.err, ::testing::HasSubstr("r_plane_mm"));
+  EXPECT_FALSE(std::filesystem::exists(t / "never.nc"));
+}
+
+TEST(linuxcnc_test, written_out_pecks_count_from_the_top_of_the_part) {
+  ASSERT_TRUE(have_rs274());
+  testutil::TempDir t;
+  const std::string nc = t / "p.nc";
+  // A steel plate's small holes are pecked (HSS, deeper than 4 D), R 2.5 mm above it.
+  auto r = testutil::acodrill_run("plan " + testutil::shell_quote(testutil::source_dir() + "/samples/pcb_mixed.dxf") +
+                                  " --dialect grbl -q --iterations 5 -o " + testutil::shell_quote(nc));
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::vector<Stroke> strokes = strokes_of(nc);
+  std::size_t pecked = 0;
+  for (const auto& [at, n] : strokes_per_hole(strokes)) pecked += n > 1;
+  EXPECT_GT(pecked, 0u) << "the 0.4 mm holes in steel are pecked";
+  for (const Stroke& s : strokes) {
+    EXPECT_LT(s.to_z, -1e-9) << "a peck ends in the air at Z" << s.to_z;
+    EXPECT_LE(s.from_z, 2.5 + 1e-9);
+  }
+}

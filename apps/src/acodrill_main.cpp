@@ -236,6 +236,18 @@ int cmd_holes(const std::string& input, const InputArgs& in_args, const std::str
   return 0;
 }
 
+// The inputs with each file once; a file given again is named in a warning.
+std::vector<std::string> read_once(const std::vector<std::string>& paths, bool quiet) {
+  std::vector<std::string> repeated;
+  std::vector<std::string> kept = app::distinct_inputs(paths, repeated);
+  if (!quiet) {
+    for (const std::string& r : repeated) {
+      std::fprintf(stderr, "acodrill: warning: %s is given more than once; it is read once\n", r == "-" ? "<stdin>" : r.c_str());
+    }
+  }
+  return kept;
+}
+
 struct PlanArgs {
   std::vector<std::string> inputs;  // one job; `input` is the first
   bool keep_files_apart = false;
@@ -475,6 +487,7 @@ int cmd_plan(const PlanArgs& a, const SolverArgs& s, const InputArgs& in_args) {
   });
   if (a.material.empty() && board) o.material = planning::Material::Pcb;
   o.thickness_mm = a.thickness.value_or(o.material == planning::Material::Pcb ? 1.6 : 6.35);
+  o.program.r_plane_mm = planning::r_plane_mm(o.machine, o.material);
   if (loaded.holes.empty()) throw app::UserError(a.input == "-" ? "<stdin>" : a.input, 0, "no holes to drill");
   std::string source;  // the job's inputs, as messages and the program's header name them
   for (const std::string& input : a.inputs) source += (source.empty() ? "" : " + ") + (input == "-" ? std::string("<stdin>") : input);
@@ -836,12 +849,13 @@ int main(int argc, char** argv) {
 
   try {
     if (*plan_cmd) {
+      plan.inputs = read_once(plan.inputs, plan.quiet);
       plan.input = plan.inputs.front();
       return cmd_plan(plan, solver, in_args);
     }
     if (*holes_cmd) return cmd_holes(holes_input, holes_in, holes_format, quiet);
     if (*tsp_cmd) return cmd_tsp(tsp_input, tsp_tour, tsp_solver, quiet);
-    if (*verify_cmd) return cmd_verify(verify_program, verify_holes, verify_origin, verify_panel, verify_pitch, verify_in, quiet);
+    if (*verify_cmd) return cmd_verify(verify_program, read_once(verify_holes, quiet), verify_origin, verify_panel, verify_pitch, verify_in, quiet);
     if (*machines_cmd) return cmd_machines(machines_show);
   } catch (const app::UserError& e) {
     std::cerr << "acodrill: error: " << e.where_what() << "\n";

@@ -14,6 +14,16 @@ LoadedHoles load_holes(const std::string& path, const InputOptions& options) {
   return formats::parse_holes(path, read_file(path), options);
 }
 
+std::vector<std::string> distinct_inputs(const std::vector<std::string>& paths, std::vector<std::string>& repeated) {
+  std::vector<std::string> kept;
+  for (const std::string& p : paths) {
+    const bool again = std::any_of(kept.begin(), kept.end(), [&](const std::string& k) { return k == p || same_file(k, p); });
+    if (again) repeated.push_back(p);
+    else kept.push_back(p);
+  }
+  return kept;
+}
+
 Job load_job(const std::vector<std::string>& paths, const InputOptions& options) {
   Job job;
   if (paths.size() == 1) {

@@ -47,7 +47,11 @@ std::string setup_sheet_html(const aco::HoleSet& holes, const PlanResult& plan, 
   h << "<h1>Setup sheet: " << esc(ctx.name) << "</h1>\n";
   h << "<table class=\"job\">\n"
     << "<tr><th>Job</th><td>" << esc(ctx.name) << "</td><th>Source file</th><td>" << esc(ctx.source) << "</td></tr>\n"
-    << "<tr><th>Program</th><td>O" << ps.program_number << " (" << esc(ps.program_name) << ")</td><th>Program file</th><td>"
+    // Only what the program holds: GRBL and Marlin programs have no O-number.
+    << "<tr><th>Program</th><td>"
+    << (gcode::has_canned_cycles(ps.dialect) ? "O" + std::to_string(ps.program_number) + " (" + esc(ps.program_name) + ")"
+                                             : esc(ps.program_name))
+    << "</td><th>Program file</th><td>"
     << esc(ctx.program == "-" ? std::string("standard output") : ctx.program) << "</td></tr>\n"
     << "<tr><th>Dialect</th><td>" << gcode::to_string(ps.dialect) << "</td><th>Units</th><td>" << (inch ? "inch (G20)" : "mm (G21)")
     << "</td></tr>\n"

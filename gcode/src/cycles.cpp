@@ -18,7 +18,8 @@ double dwell_seconds(std::string_view p, bool canned_cycle) {
   return canned_cycle || v >= 100.0 ? v / 1000.0 : v;
 }
 
-std::vector<ZMove> expand_cycle(const HoleCycle& c, double retract_z_mm, std::uint32_t line) {
+std::vector<ZMove> expand_cycle(const HoleCycle& c, double retract_z_mm, std::uint32_t line,
+                                std::optional<double> part_top_z_mm) {
   constexpr double kPeckClearance = 0.254;  // LinuxCNC's G83/G73 clearance: 0.010 in
   auto rapid = [](double z) { return ZMove{ZMove::Rapid, z, 0.0, "", 0.0}; };
   auto feed = [&](double z) { return ZMove{ZMove::Feed, z, c.feed_mm_min, "", 0.0}; };
@@ -29,8 +30,10 @@ std::vector<ZMove> expand_cycle(const HoleCycle& c, double retract_z_mm, std::ui
     case 81: case 82: case 83: case 73:
       if (pecks) {
         double reached = c.r_mm;
+        // Where the pecks are counted from: R (LinuxCNC), or the part's top.
+        const double counted_from = part_top_z_mm ? std::min(c.r_mm, *part_top_z_mm) : c.r_mm;
         while (reached > c.z_mm + 1e-9) {
-          const double next = std::max(c.z_mm, reached - *c.q_mm);
+          const double next = std::max(c.z_mm, std::min(reached, counted_from) - *c.q_mm);
           if (reached < c.r_mm) {
             // Back to just above the depth already cut: G83 from R, G73 from where it backed off.
             if (c.code == 83) m.push_back(rapid(c.r_mm));

@@ -166,8 +166,9 @@ void write_hobby_program(std::ostream& out, const std::vector<ToolPass>& passes,
     // tool's last hole and before a move over a clamp. Every hole of the
     // tool is one of these two.
     const HoleCycle cycle = cycle_of(t, s);
-    const std::vector<ZMove> to_r = expand_cycle(cycle, s.r_plane_mm, 0);
-    const std::vector<ZMove> to_initial = expand_cycle(cycle, s.initial_z_mm, 0);
+    // Pecks count from the top of the part (work Z 0), never in the air above it.
+    const std::vector<ZMove> to_r = expand_cycle(cycle, s.r_plane_mm, 0, 0.0);
+    const std::vector<ZMove> to_initial = expand_cycle(cycle, s.initial_z_mm, 0, 0.0);
     for (std::size_t i = first; i < p.holes.size(); ++i) {
       const bool last = i + 1 == p.holes.size();
       const bool clear = i < p.clear_after.size() && p.clear_after[i];

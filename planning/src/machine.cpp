@@ -49,6 +49,11 @@ Machine parse_machine(const std::string& text, const std::string& path) {
     }
     m.drills = j["drills"].get<std::string>();
   }
+  if (j.contains("r_plane_mm")) {
+    const double r = json_number(j, "r_plane_mm", 0, path);
+    if (!(r > 0 && r <= 50)) throw UserError(path, 0, "r_plane_mm (height above the part where feeds begin) must be in (0, 50] mm");
+    m.r_plane_mm = r;
+  }
   if (!(m.hit_s >= 0 && m.hit_s <= 600)) throw UserError(path, 0, "hit_s must be 0..600");
   if (!(m.spindle_start_s >= 0 && m.spindle_start_s <= 600)) throw UserError(path, 0, "spindle_start_s must be 0..600");
   m.rapid_xy_mm_min = json_number(j, "rapid_xy_mm_min", m.rapid_xy_mm_min, path);

@@ -25,9 +25,12 @@ double cycle_time_s(const gcode::Tool& t, const gcode::ProgramSettings& s, const
   double time = depth / t.feed_mm_min * 60.0;
   const auto zr = [&](double d) { return rapid_time_s(d, m.rapid_z_mm_min, m.accel_mm_s2); };
   if ((t.cycle == gcode::Cycle::G83 || t.cycle == gcode::Cycle::G73) && t.peck_mm > 0) {
-    const int pecks = static_cast<int>(std::ceil(depth / t.peck_mm));
+    // A canned cycle counts pecks from R; acodrill's written-out cycles
+    // (GRBL, Marlin) from the top of the part, the air above it in the first stroke.
+    const double air = gcode::has_canned_cycles(s.dialect) ? 0.0 : std::max(0.0, s.r_plane_mm);
+    const int pecks = static_cast<int>(std::ceil((depth - air) / t.peck_mm - 1e-9));
     for (int k = 1; k < pecks; ++k) {
-      const double reached = k * t.peck_mm;
+      const double reached = air + k * t.peck_mm;
       // G83 retracts to R and comes back; G73 backs off a little.
       time += t.cycle == gcode::Cycle::G83 ? 2.0 * zr(reached) : 2.0 * zr(0.25);
     }

@@ -71,7 +71,9 @@ ToolTable parse_tool_table(const std::string& text, const std::string& path) {
 
 ToolTable generate_tool_table(const aco::HoleSet& holes, Material material, double thickness_mm, const Machine& machine) {
   const int max_rpm = machine.max_rpm;
-  const bool carbide = machine.drills == "carbide";
+  // A board is drilled with carbide PCB drills in one stroke unless the
+  // machine says it uses something else; a plate with HSS twist drills.
+  const bool carbide = machine.drills == "carbide" || (machine.drills.empty() && material == Material::Pcb);
   std::vector<long long> keys;  // diameters in micrometres
   keys.reserve(holes.size());
   for (const aco::Hole& h : holes) keys.push_back(std::llround(h.diameter * 1000.0));
@@ -123,6 +125,10 @@ ToolTable generate_tool_table(const aco::HoleSet& holes, Material material, doub
     t.entries.push_back(e);
   }
   return t;
+}
+
+double r_plane_mm(const Machine& machine, Material material) {
+  return machine.r_plane_mm.value_or(material == Material::Pcb ? 1.0 : 2.5);
 }
 
 int default_max_hits(double d) {

@@ -31,6 +31,11 @@ struct Job {
   std::vector<std::uint32_t> hole_source;  // per hole of `holes`: its index in `sources`
   std::vector<LoadedHoles> parts;          // each file as read (holes left out), for its summary line
 };
+// The inputs with each file once, in the order given: a path given again, or
+// another name of the same file, is left out and listed in `repeated` (the
+// caller warns), so a file given twice is read, drilled and named once.
+std::vector<std::string> distinct_inputs(const std::vector<std::string>& paths, std::vector<std::string>& repeated);
+
 // Throws UserError for a drilling program among other inputs: a program is reordered alone.
 Job load_job(const std::vector<std::string>& paths, const InputOptions& options);
 

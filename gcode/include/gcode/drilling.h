@@ -52,7 +52,12 @@ struct HoleCycle;
 // cycles (GRBL, Marlin) drills the same hole. Throws ProgramError (`line`)
 // for the cycles that cannot be made of moves: tapping (G84, G74), back
 // boring (G87), G86 and G88 (spindle stops and manual moves).
-std::vector<ZMove> expand_cycle(const HoleCycle& cycle, double retract_z_mm, std::uint32_t line);
+// With `part_top_z_mm` (below R), G83/G73 pecks count from the top of the
+// part instead: the first stroke feeds from R through the air to Q below
+// the top, so no peck is cut in air. acodrill's own programs for controls
+// without canned cycles drill so; another CAM's cycles keep LinuxCNC's way.
+std::vector<ZMove> expand_cycle(const HoleCycle& cycle, double retract_z_mm, std::uint32_t line,
+                                std::optional<double> part_top_z_mm = std::nullopt);
 
 // How one hole is made. Positions and lengths in mm, work coordinates.
 struct HoleCycle {

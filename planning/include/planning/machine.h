@@ -29,9 +29,14 @@ struct Machine {
   // the spot, Z down and up (its data sheet's "hits per minute"); 0: timed
   // from the tool's feed, pecks and dwell instead.
   double hit_s = 0.0;
-  // The drills it uses: "hss" twist drills (the default) or "carbide" micro
-  // drills, which a PCB drilling machine runs at high speed in one stroke.
-  std::string drills = "hss";
+  // The drills it uses: "hss" twist drills or "carbide" micro drills, which a
+  // PCB drilling machine runs at high speed in one stroke. Empty: the profile
+  // does not say, and the material decides (carbide PCB drills for a board,
+  // HSS twist drills for a plate), as a hobbyist drills FR-4 on a router.
+  std::string drills;
+  // Height above the part where feeds begin (the canned cycles' R plane).
+  // Unset: 1 mm over a board, 2.5 mm (0.1 in) over a plate.
+  std::optional<double> r_plane_mm;
   double rapid_xy_mm_min = 25400.0;  // 1000 in/min
   double rapid_z_mm_min = 25400.0;
   double accel_mm_s2 = 2500.0;       // per axis

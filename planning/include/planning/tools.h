@@ -34,9 +34,16 @@ struct ToolTable {
 ToolTable parse_tool_table(const std::string& json_text, const std::string& source);
 // One tool per distinct diameter (to 0.001 mm), ascending, feeds and speeds
 // from the material and the machine: HSS twist drills (pecked where deep), or
-// on a machine with carbide micro drills (a PCB drill) single strokes at the
-// carbide's speed and feed per revolution; spindle speeds within the machine's.
+// carbide micro drills — on a machine whose profile says "carbide", and on a
+// board (Material::Pcb) when the profile names no drill kind — in single
+// strokes at the carbide's speed and feed per revolution; spindle speeds
+// within the machine's.
 ToolTable generate_tool_table(const aco::HoleSet& holes, Material material, double thickness_mm, const Machine& machine);
+
+// Where feeds begin above the part: the machine's r_plane_mm, else 1 mm over
+// a board (a PCB drill starts its stroke close: every millimetre above the
+// board is fed through air) and 2.5 mm (0.1 in, the mill standard) over a plate.
+double r_plane_mm(const Machine& machine, Material material);
 
 // The life of a carbide micro drill in FR-4 by diameter, in hits (drill
 // makers' figures for one 1.6 mm board per stack: the smallest wear first).
