@@ -52,6 +52,14 @@ else()
   message(STATUS "help2man not found: no man pages (scripts/package installs it)")
 endif()
 
+# The KiCad plugin (plugins/kicad): the Python package acodrill_kicad where
+# Debian's python3 finds it (`python3 -m acodrill_kicad`), and the file that
+# makes pcbnew load it from its bundled plugin folder.
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/plugins/kicad/acodrill_kicad DESTINATION lib/python3/dist-packages
+        FILES_MATCHING PATTERN "*.py" PATTERN "*.png" PATTERN "__pycache__" EXCLUDE)
+install(FILES ${PROJECT_SOURCE_DIR}/plugins/kicad/kicad_loader/acodrill_kicad_plugin.py
+        DESTINATION share/kicad/scripting/plugins)
+
 # Debian package (scripts/package): dependencies computed by dpkg-shlibdeps.
 set(CPACK_GENERATOR DEB)
 set(CPACK_PACKAGE_NAME acodrill)
@@ -59,10 +67,15 @@ set(CPACK_PACKAGE_VERSION ${PROJECT_VERSION})
 set(CPACK_PACKAGE_CONTACT "acodrill developers <acodrill@localhost>")
 set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "orders drill holes with an ant colony and writes drilling G-code")
 set(CPACK_DEBIAN_PACKAGE_DESCRIPTION
-    "acodrill reads the drill holes of a part (DXF, Excellon, Gerber, CSV, XML),\n orders them so the spindle travels as little as possible with a\n thread-parallel ant colony, and writes HAAS, Fanuc or LinuxCNC programs\n with canned drilling cycles. Also installs the libaco solver and readers\n as static libraries with a CMake package.")
+    "acodrill reads the drill holes of a part (DXF, Excellon, Gerber, CSV, XML),\n orders them so the spindle travels as little as possible with a\n thread-parallel ant colony, and writes HAAS, Fanuc or LinuxCNC programs\n with canned drilling cycles. Also installs the libaco solver and readers\n as static libraries with a CMake package, and a KiCad plugin\n (Tools > External Plugins > Drill with acodrill).")
 set(CPACK_DEBIAN_PACKAGE_SECTION science)
 set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)  # acodrill_<version>_<arch>.deb
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
+# The KiCad plugin needs KiCad; acodrill itself does not.
+set(CPACK_DEBIAN_PACKAGE_SUGGESTS "kicad (>= 6.0)")
+# Python leaves byte code beside the plugin when KiCad runs it: removed with the package.
+configure_file(${PROJECT_SOURCE_DIR}/cmake/prerm.in ${PROJECT_BINARY_DIR}/debian/prerm @ONLY)
+set(CPACK_DEBIAN_PACKAGE_CONTROL_EXTRA ${PROJECT_BINARY_DIR}/debian/prerm)
 set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
 set(CPACK_OUTPUT_FILE_PREFIX ${PROJECT_BINARY_DIR})
 include(CPack)

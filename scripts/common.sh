@@ -13,7 +13,9 @@ TEST_PACKAGES=(python3-ezdxf librsvg2-bin)
 # LinuxCNC's standalone interpreter rs274 reads our programs back in the tests
 # (gcc and make above also build GRBL's own parser, tests/grbl-sim).
 # Headless chromium prints the setup sheet to PDF and pdftotext reads it back.
-TEST_PACKAGES_NO_RECOMMENDS=(linuxcnc-uspace gerbv chromium poppler-utils)
+# KiCad 6's pcbnew Python module and its demo boards test the KiCad plugin
+# (its dialog in Xvfb); KiCad's PCM schema is checked with python3-jsonschema.
+TEST_PACKAGES_NO_RECOMMENDS=(linuxcnc-uspace gerbv chromium poppler-utils kicad kicad-demos python3-jsonschema xvfb xauth)
 
 missing_packages() {
   local p
