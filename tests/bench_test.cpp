@@ -174,3 +174,124 @@ TEST(bench_test, make_tiled_lays_copies_of_the_board_side_by_side_with_the_gap_b
   ASSERT_EQ(solved.code, 0) << solved.err;
   EXPECT_THAT(solved.out, ::testing::StartsWith("length "));
 }
+
+// Issue 48: sweeps split into shards for a cluster.
+namespace {
+
+// The rows of a runs or summary CSV without the columns that hold times (and
+// the shard that ran a row, which the merge clears).
+std::vector<std::vector<std::string>> without_times(const std::string& text) {
+  auto rows = csv(text);
+  std::vector<int> drop;
+  for (const char* name : {"wall_s", "time_to_1pct_s", "busy_s", "trace", "wall_median_s", "wall_mean_s", "wall_sd_s",
+                           "wall_min_s", "speedup", "efficiency"}) {
+    const int k = column(rows.at(0), name);
+    if (k >= 0) drop.push_back(k);
+  }
+  std::sort(drop.rbegin(), drop.rend());
+  for (auto& row : rows) {
+    for (int k : drop) {
+      if (k < static_cast<int>(row.size())) row.erase(row.begin() + k);
+    }
+  }
+  return rows;
+}
+
+const std::string kSweep = " --algorithm focused,nn2opt --alpha 1,2 --beta 3,5 --seeds 2 --iterations 3 --threads 1";
+
+std::string sweep_instances() {
+  return " --instances " + shell_quote(testutil::data("tsplib/d198.tsp") + "," + testutil::source_dir() + "/samples/plate10.dxf");
+}
+
+}  // namespace
+
+TEST(bench_test, shards_merged_give_the_rows_and_summary_of_one_process_whatever_n) {
+  testutil::TempDir t;
+  auto one = testutil::run(acobench() + sweep_instances() + kSweep + " --out " + shell_quote(t / "one.csv") + " --summary " +
+                           shell_quote(t / "one-summary.csv"));
+  ASSERT_EQ(one.code, 0) << one.err;
+  const auto one_rows = without_times(slurp(t / "one.csv"));
+  ASSERT_EQ(one_rows.size(), 1u + 2 * 2 * (2 * 2) * 2) << "2 instances x 2 algorithms x 2x2 alpha-beta cells x 2 seeds";
+  const int tour = column(one_rows[0], "tour_hash");
+  ASSERT_GE(tour, 0);
+  EXPECT_NE(one_rows[1][tour], one_rows[2][tour]) << "seeds 1 and 2 of a cell: different tours";
+  for (int n : {1, 3, 7}) {
+    std::string parts;
+    for (int k = n - 1; k >= 0; --k) {  // any order
+      const std::string part = t / ("part-" + std::to_string(k) + ".csv");
+      auto r = testutil::run(acobench() + sweep_instances() + kSweep + " --shard " + std::to_string(k) + "/" +
+                             std::to_string(n) + " --out " + shell_quote(part));
+      ASSERT_EQ(r.code, 0) << r.err;
+      parts += " " + shell_quote(part);
+    }
+    auto m = testutil::run(acobench() + " merge" + parts + " --out " + shell_quote(t / "all.csv") + " --summary " +
+                           shell_quote(t / "all-summary.csv") + " --plots " + shell_quote(t / "plots"));
+    ASSERT_EQ(m.code, 0) << m.err;
+    EXPECT_EQ(without_times(slurp(t / "all.csv")), one_rows) << n << " shards";
+    EXPECT_EQ(without_times(slurp(t / "all-summary.csv")), without_times(slurp(t / "one-summary.csv"))) << n << " shards";
+    EXPECT_TRUE(std::filesystem::exists(t / "plots/convergence.svg"));
+    for (int k = 0; k < n; ++k) std::filesystem::remove(t / ("part-" + std::to_string(k) + ".csv"));
+  }
+}
+
+TEST(bench_test, merge_refuses_a_missing_repeated_foreign_or_cut_shard) {
+  testutil::TempDir t;
+  auto shard = [&](const std::string& extra, const std::string& k, const std::string& name) {
+    auto r = testutil::run(acobench() + sweep_instances() + kSweep + extra + " --shard " + k + " --out " + shell_quote(t / name));
+    ASSERT_EQ(r.code, 0) << r.err;
+  };
+  shard("", "0/3", "p0.csv");
+  shard("", "1/3", "p1.csv");
+  shard("", "2/3", "p2.csv");
+  shard(" --rho 0.3", "2/3", "other.csv");  // another sweep's shard
+  const std::string p2 = slurp(t / "p2.csv");
+  testutil::spit(t / "cut.csv", p2.substr(0, p2.rfind('\n', p2.size() - 2) + 1));  // its last run lost
+  const std::string p0 = shell_quote(t / "p0.csv"), p1 = shell_quote(t / "p1.csv");
+  struct Case {
+    std::string parts, says;
+  };
+  for (const Case& c : {Case{p0 + " " + p1, "shard 2/3 of sweep"},
+                        Case{p0 + " " + p1 + " " + p1 + " " + shell_quote(t / "p2.csv"), "is given twice"},
+                        Case{p0 + " " + p1 + " " + shell_quote(t / "other.csv"), "a shard of another sweep"},
+                        Case{p0 + " " + p1 + " " + shell_quote(t / "cut.csv"), "cut short"},
+                        Case{p0 + " " + shell_quote(testutil::source_dir() + "/docs/bench/gap-runs.csv"), "not a runs CSV"}}) {
+    auto r = testutil::run(acobench() + " merge " + c.parts + " --out " + shell_quote(t / "all.csv"));
+    EXPECT_EQ(r.code, 2) << c.parts << ": " << r.err;
+    EXPECT_EQ(testutil::count_lines(r.err), 1) << r.err;
+    EXPECT_THAT(r.err, ::testing::HasSubstr(c.says));
+    EXPECT_FALSE(std::filesystem::exists(t / "all.csv"));
+  }
+  for (const char* bad : {"4/4", "1/0", "x", "1/2/3"}) {
+    auto r = testutil::run(acobench() + sweep_instances() + kSweep + " --shard " + bad + " --out " + shell_quote(t / "x.csv"));
+    EXPECT_EQ(r.code, 2) << bad;
+    EXPECT_THAT(r.err, ::testing::HasSubstr("--shard must be K/N"));
+  }
+}
+
+// The batch scripts `acobench slurm` writes, run as Slurm runs them (its
+// #SBATCH lines are comments to bash): the array's tasks one by one, then the
+// merge. scripts/slurm-test runs them on a real one-node Slurm.
+TEST(bench_test, slurm_scripts_run_the_shards_and_the_merge) {
+  testutil::TempDir t;
+  auto w = testutil::run("cd " + shell_quote(t.path()) + " && " + acobench() + " slurm" + sweep_instances() + kSweep +
+                         " --shards 4 --out all.csv --summary summary.csv --partition debug --time 0:10:00");
+  ASSERT_EQ(w.code, 0) << w.err;
+  const std::string array = slurp(t / "acobench-all.sbatch"), merge = slurp(t / "acobench-all-merge.sbatch");
+  EXPECT_THAT(array, ::testing::HasSubstr("#SBATCH --array=0-3\n"));
+  EXPECT_THAT(array, ::testing::HasSubstr("#SBATCH --partition=debug\n"));
+  EXPECT_THAT(array, ::testing::HasSubstr("#SBATCH --time=0:10:00\n"));
+  EXPECT_THAT(array, ::testing::HasSubstr("#SBATCH --cpus-per-task=1\n"));
+  EXPECT_THAT(array, ::testing::HasSubstr("--shard \"${SLURM_ARRAY_TASK_ID}/4\""));
+  EXPECT_THAT(w.out, ::testing::HasSubstr("sbatch --dependency=afterok:"));
+  for (int k = 0; k < 4; ++k) {
+    auto r = testutil::run("cd / && SLURM_ARRAY_TASK_ID=" + std::to_string(k) + " SLURM_CPUS_PER_TASK=1 bash " +
+                           shell_quote(t / "acobench-all.sbatch"));
+    ASSERT_EQ(r.code, 0) << r.err;
+  }
+  auto m = testutil::run("cd / && bash " + shell_quote(t / "acobench-all-merge.sbatch"));
+  ASSERT_EQ(m.code, 0) << m.err;
+  auto one = testutil::run(acobench() + sweep_instances() + kSweep + " --out " + shell_quote(t / "one.csv"));
+  ASSERT_EQ(one.code, 0) << one.err;
+  EXPECT_EQ(without_times(slurp(t / "all.csv")), without_times(slurp(t / "one.csv")));
+  EXPECT_TRUE(std::filesystem::exists(t / "summary.csv"));
+}

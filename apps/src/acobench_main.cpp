@@ -4,7 +4,9 @@
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <chrono>
+#include <cstdlib>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -29,6 +31,51 @@ std::string samples_dir(const char* argv0) {
   return "samples";
 }
 
+std::string shell_quote(const std::string& s) {
+  if (!s.empty() && s.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-+=/.,:@%") == std::string::npos) {
+    return s;
+  }
+  std::string q = "'";
+  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+// The sweep's own options from the command line: without the subcommand, the
+// options of `slurm` and where the merge writes (those go to the merge job).
+std::vector<std::string> sweep_arguments(int argc, char** argv) {
+  static const std::set<std::string> with_value = {"--shards", "--partition", "--time", "--cpus-per-task", "--out",
+                                                   "--summary", "--plots", "--shard"};
+  static const std::set<std::string> flags = {"--submit"};
+  std::vector<std::string> kept;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    const std::string name = a.substr(0, a.find('='));
+    if (a == "slurm" && kept.size() + 1 == static_cast<std::size_t>(i)) continue;
+    if (with_value.count(name)) {
+      if (a.find('=') == std::string::npos) ++i;
+      continue;
+    }
+    if (flags.count(a)) continue;
+    kept.push_back(a);
+  }
+  return kept;
+}
+
+// Runs a command; its standard output, or a UserError with what it said.
+std::string run_command(const std::string& command) {
+  std::string out;
+  FILE* p = ::popen((command + " 2>&1").c_str(), "r");
+  if (!p) throw app::UserError("cannot run " + command);
+  char buf[4096];
+  while (std::fgets(buf, sizeof buf, p)) out += buf;
+  const int status = ::pclose(p);
+  if (status != 0) {
+    while (!out.empty() && (out.back() == '\n' || out.back() == '\r')) out.pop_back();
+    throw app::UserError(command + " failed: " + out);
+  }
+  return out;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -39,7 +86,12 @@ int main(int argc, char** argv) {
                "--seeds 5 --out runs.csv --summary summary.csv --plots plots/\n"
                "  acobench --instances samples/plate70.dxf --algorithm as --alpha 1,2,2.5 --beta 4,4.5 --ants 125 "
                "--iterations 125 --local-search none --threads 1,2 --seeds 30 --out runs.csv\n"
-               "  acobench --preset thesis --quick --out thesis.csv     the thesis's experiments 1-5, tables 4.1-4.15\n",
+               "  acobench --preset thesis --quick --out thesis.csv     the thesis's experiments 1-5, tables 4.1-4.15\n\n"
+               "On a cluster: the same sweep in N independent shards, joined again with exactly the rows of one process:\n"
+               "  acobench SWEEP-OPTIONS --shard 0/4 --out part-0.csv    ... up to --shard 3/4, anywhere, in any order\n"
+               "  acobench merge part-0.csv part-1.csv part-2.csv part-3.csv --out all.csv --summary summary.csv\n"
+               "  acobench slurm SWEEP-OPTIONS --shards 4 --out all.csv --partition P --time 1:00:00 --submit\n"
+               "                         a Slurm job array (one task a shard) and a merge job that waits for it\n",
                "acobench"};
   cli.set_version_flag("--version", std::string("acobench ") + ACO_VERSION);
   std::vector<std::string> instances, algorithms{"focused"}, local_search{"3opt"};
@@ -70,6 +122,34 @@ int main(int argc, char** argv) {
   cli.add_flag("--quick", quick, "With --preset thesis: 5 repetitions instead of 30");
   cli.add_option("--tables", tables, "With --preset thesis: write the tables here (default: stdout)");
   cli.add_option("--time-budget", budget, "Stop starting runs after this many seconds for the whole sweep");
+  std::string shard_text;
+  cli.add_option("--shard", shard_text,
+                 "K/N: run only the K-th (0-based) of N slices of the sweep's runs (run i of the sweep is in shard i mod N); "
+                 "join the shards' CSVs with acobench merge");
+  // acobench merge PARTS... --out all.csv [--summary S] [--plots DIR]
+  std::vector<std::string> merge_parts;
+  CLI::App* merge_cmd = cli.add_subcommand("merge", "Join the shards of one sweep (--out, --summary, --plots as for a sweep); "
+                                                    "refuses a missing, repeated or foreign shard");
+  merge_cmd->add_option("parts", merge_parts, "The shards' runs CSVs")->required();
+  merge_cmd->fallthrough();
+  // acobench slurm SWEEP-OPTIONS --shards N --out all.csv [...]
+  std::size_t shards = 0;
+  int cpus_per_task = 0;
+  std::string partition, slurm_time;
+  bool submit = false;
+  CLI::App* slurm_cmd = cli.add_subcommand(
+      "slurm", "Write (and with --submit submit) a Slurm job array running the sweep in --shards tasks, each "
+               "acobench ... --shard $SLURM_ARRAY_TASK_ID/N, and a merge job that runs after it; --out, --summary and "
+               "--plots are the merge's");
+  slurm_cmd->add_option("--shards", shards, "Tasks of the job array (N)")->required()->check(CLI::Range(1, 100000));
+  slurm_cmd->add_option("--partition", partition, "Slurm partition (sbatch --partition); default: the cluster's");
+  slurm_cmd->add_option("--time", slurm_time, "Time limit of each task (sbatch --time, e.g. 2:00:00)");
+  slurm_cmd->add_option("--cpus-per-task", cpus_per_task,
+                        "CPUs of each task (default: the largest --threads, else 1); the sweep's default threads follow "
+                        "SLURM_CPUS_PER_TASK")
+      ->check(CLI::Range(1, 4096));
+  slurm_cmd->add_flag("--submit", submit, "Submit both jobs with sbatch (else print how)");
+  slurm_cmd->fallthrough();
   try {
     cli.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -82,7 +162,24 @@ int main(int argc, char** argv) {
   }
 
   try {
-    const int cores = std::max(1, omp_get_num_procs());
+    if (*merge_cmd) {
+      if (out.empty()) throw app::UserError("merge: --out is required: the CSV of the whole sweep");
+      std::vector<app::BenchRun> runs = app::merge_shards(merge_parts);
+      app::write_file_atomic(out, app::runs_csv(runs));
+      if (!summary.empty()) app::write_file_atomic(summary, app::summary_csv(runs));
+      if (!plots.empty()) {
+        for (const std::string& f : app::write_plots(runs, plots)) std::fprintf(stderr, "acobench: chart %s\n", f.c_str());
+      }
+      std::fprintf(stderr, "acobench: merged %zu shards, %zu runs of sweep %s into %s\n", merge_parts.size(), runs.size(),
+                   runs.empty() ? "" : runs.front().sweep_id.c_str(), out.c_str());
+      return 0;
+    }
+    // In a Slurm task "all cores" are the task's, not the node's.
+    int cores = std::max(1, omp_get_num_procs());
+    if (const char* slurm_cpus = std::getenv("SLURM_CPUS_PER_TASK")) {
+      const int c = std::atoi(slurm_cpus);
+      if (c >= 1) cores = c;
+    }
     if (threads.empty()) threads = cores > 1 ? std::vector<int>{1, cores} : std::vector<int>{1};
     struct Job {
       app::BenchCell cell;
@@ -175,6 +272,85 @@ int main(int argc, char** argv) {
       }
     }
 
+    std::vector<app::SweepRun> sweep;
+    for (const Job& j : jobs) sweep.push_back({j.cell, j.seed});
+    const std::string sweep_id = app::sweep_fingerprint(sweep, ACO_VERSION);
+
+    if (*slurm_cmd) {
+      if (out.empty()) throw app::UserError("slurm: --out is required: where the merge job writes the whole sweep");
+      if (shards > jobs.size()) {
+        throw app::UserError("slurm: --shards " + std::to_string(shards) + " is more than the sweep's " +
+                             std::to_string(jobs.size()) + " runs");
+      }
+      int cpus = cpus_per_task;
+      if (cpus == 0) cpus = threads.empty() ? 1 : *std::max_element(threads.begin(), threads.end());
+      std::error_code ec;
+      const std::string self = std::filesystem::canonical("/proc/self/exe", ec).string();
+      const std::string here = std::filesystem::current_path().string();
+      const std::string stem = std::filesystem::path(out).stem().string();
+      const std::string parts_dir = out + ".parts";
+      const std::string array_script = "acobench-" + stem + ".sbatch", merge_script = "acobench-" + stem + "-merge.sbatch";
+      std::string args;
+      for (const std::string& a : sweep_arguments(argc, argv)) args += " " + shell_quote(a);
+      const std::string n = std::to_string(shards);
+      std::string common = "#SBATCH --cpus-per-task=" + std::to_string(cpus) + "\n";
+      if (!partition.empty()) common += "#SBATCH --partition=" + partition + "\n";
+      if (!slurm_time.empty()) common += "#SBATCH --time=" + slurm_time + "\n";
+      const std::string preamble =
+          "# Written by acobench " ACO_VERSION " (acobench slurm): sweep " + sweep_id + ", " + std::to_string(jobs.size()) +
+          " runs in " + n + " shards.\n# On a cluster, load what acobench needs here (e.g. `module load gcc`) and keep\n"
+          "# the instances and this folder on a file system the nodes share.\nset -euo pipefail\ncd " + shell_quote(here) + "\n";
+      const std::string array_text =
+          "#!/bin/bash\n#SBATCH --job-name=acobench-" + stem + "\n#SBATCH --array=0-" + std::to_string(shards - 1) + "\n" + common +
+          "#SBATCH --output=" + parts_dir + "/slurm-%A_%a.log\n" + preamble + "mkdir -p " + shell_quote(parts_dir) + "\n" +
+          "exec " + shell_quote(self) + args + " --shard \"${SLURM_ARRAY_TASK_ID}/" + n + "\" --out " + shell_quote(parts_dir) +
+          "/part-\"${SLURM_ARRAY_TASK_ID}\".csv\n";
+      std::string merge_args = " --out " + shell_quote(out);
+      if (!summary.empty()) merge_args += " --summary " + shell_quote(summary);
+      if (!plots.empty()) merge_args += " --plots " + shell_quote(plots);
+      std::string part_list;
+      for (std::size_t k = 0; k < shards; ++k) part_list += " " + shell_quote(parts_dir) + "/part-" + std::to_string(k) + ".csv";
+      std::string merge_common = "#SBATCH --cpus-per-task=1\n";
+      if (!partition.empty()) merge_common += "#SBATCH --partition=" + partition + "\n";
+      const std::string merge_text = "#!/bin/bash\n#SBATCH --job-name=acobench-" + stem + "-merge\n" + merge_common +
+                                     "#SBATCH --output=" + parts_dir + "/slurm-merge-%j.log\n" + preamble + "exec " +
+                                     shell_quote(self) + " merge" + part_list + merge_args + "\n";
+      std::filesystem::create_directories(parts_dir);
+      app::write_file_atomic(array_script, array_text);
+      app::write_file_atomic(merge_script, merge_text);
+      std::fprintf(stderr, "acobench: %zu runs of sweep %s in %zu shards: %s (job array), %s (merge, after it)\n", jobs.size(),
+                   sweep_id.c_str(), shards, array_script.c_str(), merge_script.c_str());
+      if (!submit) {
+        std::printf("jid=$(sbatch --parsable %s) && sbatch --dependency=afterok:${jid%%%%;*} %s\n", array_script.c_str(),
+                    merge_script.c_str());
+        return 0;
+      }
+      std::string array_id = run_command("sbatch --parsable " + shell_quote(array_script));
+      array_id = array_id.substr(0, array_id.find_first_of(";\r\n"));
+      std::string merge_id = run_command("sbatch --parsable --dependency=afterok:" + array_id + " " + shell_quote(merge_script));
+      merge_id = merge_id.substr(0, merge_id.find_first_of(";\r\n"));
+      std::printf("array %s\nmerge %s\n", array_id.c_str(), merge_id.c_str());
+      std::fprintf(stderr, "acobench: submitted job array %s and merge job %s; squeue shows them, %s will hold the sweep\n",
+                   array_id.c_str(), merge_id.c_str(), out.c_str());
+      return 0;
+    }
+
+    const app::Shard shard = shard_text.empty() ? app::Shard{} : app::parse_shard(shard_text);
+    std::vector<std::size_t> sweep_index;
+    {
+      std::vector<Job> mine;
+      for (std::size_t i = 0; i < jobs.size(); ++i) {
+        if (!shard.holds(i)) continue;
+        mine.push_back(jobs[i]);
+        sweep_index.push_back(i);
+      }
+      if (!shard.whole()) {
+        std::fprintf(stderr, "acobench: shard %s: %zu of the sweep's %zu runs (sweep %s)\n", shard.text().c_str(), mine.size(),
+                     jobs.size(), sweep_id.c_str());
+      }
+      jobs.swap(mine);
+    }
+
     const bool tty = ::isatty(STDERR_FILENO);
     const auto t0 = std::chrono::steady_clock::now();
     std::vector<app::BenchRun> runs;
@@ -198,6 +374,8 @@ int main(int argc, char** argv) {
     if (tty) std::fprintf(stderr, "\n");
     if (budget_hit) std::fprintf(stderr, "acobench: time budget reached after %zu of %zu runs\n", done, jobs.size());
     app::fill_time_to_target(runs);
+    sweep_index.resize(runs.size());
+    app::stamp_sweep(runs, sweep_index, sweep_id, sweep.size(), shard, ACO_VERSION);
     if (!out.empty()) app::write_file_atomic(out, app::runs_csv(runs));
     if (!summary.empty()) app::write_file_atomic(summary, app::summary_csv(runs));
     if (!plots.empty()) {

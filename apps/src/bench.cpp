@@ -1,6 +1,8 @@
 #include "app/bench.h"
 
 #include <algorithm>
+#include <charconv>
+#include <cstdio>
 #include <cmath>
 #include <filesystem>
 #include <numeric>
@@ -55,6 +57,49 @@ std::string key_without_threads(const BenchRun& r) {
 }
 
 std::string key(const BenchRun& r) { return key_without_threads(r) + "|" + std::to_string(r.cell.threads); }
+
+constexpr std::uint64_t kFnvOffset = 1469598103934665603ull, kFnvPrime = 1099511628211ull;
+
+std::uint64_t fnv1a(std::uint64_t h, const void* data, std::size_t size) {
+  const auto* p = static_cast<const unsigned char*>(data);
+  for (std::size_t i = 0; i < size; ++i) {
+    h ^= p[i];
+    h *= kFnvPrime;
+  }
+  return h;
+}
+
+std::uint64_t fnv1a(std::uint64_t h, const std::string& text) { return fnv1a(h, text.data(), text.size() + 1); }
+
+std::uint64_t tour_hash(const aco::Order& order) {
+  std::uint64_t h = kFnvOffset;
+  for (aco::HoleIndex i : order) {
+    const std::uint32_t v = static_cast<std::uint32_t>(i);
+    h = fnv1a(h, &v, sizeof v);
+  }
+  return h;
+}
+
+std::string hex(std::uint64_t v) {
+  char buf[17];
+  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(v));
+  return buf;
+}
+
+// The shortest text that reads back to the same double (a trace's lengths).
+std::string exact(double v) {
+  char buf[64];
+  auto r = std::to_chars(buf, buf + sizeof buf, v);
+  return std::string(buf, r.ptr);
+}
+
+// A CSV field: quoted when it holds a comma, a quote or a line break.
+std::string csv_field(const std::string& v) {
+  if (v.find_first_of(",\"\n\r") == std::string::npos) return v;
+  std::string q = "\"";
+  for (char c : v) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return q + "\"";
+}
 
 }  // namespace
 
@@ -118,6 +163,7 @@ BenchRun run_cell(const BenchInstance& inst, const BenchCell& cell, std::uint64_
     else order = aco::nearest_neighbor_2opt(p);
     run.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     run.length = aco::route_length(p, order);
+    run.tour_hash = tour_hash(order);
     run.trace.push_back({0, run.wall_s, run.length});
     return run;
   }
@@ -133,6 +179,7 @@ BenchRun run_cell(const BenchInstance& inst, const BenchCell& cell, std::uint64_
   const aco::Params used = aco::resolve(params, p.points.size());
   aco::Solution s = aco::solve(p, params);
   run.length = s.length;
+  run.tour_hash = tour_hash(s.order);
   run.wall_s = s.wall_s;
   run.iterations_done = s.iterations;
   run.busy_s = s.thread_busy_s;
@@ -166,7 +213,8 @@ void fill_time_to_target(std::vector<BenchRun>& runs) {
 std::string runs_csv(const std::vector<BenchRun>& runs) {
   std::ostringstream out;
   out << "instance,n,algorithm,alpha,beta,rho,ants,iterations,threads,seed,length,gap_pct,wall_s,"
-         "local_search,time_limit_s,iterations_done,time_to_1pct_s,busy_s\n";
+         "local_search,time_limit_s,iterations_done,time_to_1pct_s,busy_s,"
+         "tour_hash,trace,instance_path,sweep_index,sweep_runs,sweep,shard,version\n";
   for (const BenchRun& r : runs) {
     const bool base = is_baseline(r.cell.algorithm);
     out << r.name << ',' << r.n << ',' << r.cell.algorithm << ',' << (base ? "" : param(r.alpha)) << ','
@@ -176,6 +224,13 @@ std::string runs_csv(const std::vector<BenchRun>& runs) {
         << fmt(r.wall_s, 6) << ',' << (base ? "" : r.cell.local_search) << ',' << param(r.cell.time_limit_s) << ','
         << r.iterations_done << ',' << (r.time_to_1pct_s ? fmt(*r.time_to_1pct_s, 6) : "") << ',';
     for (std::size_t k = 0; k < r.busy_s.size(); ++k) out << (k ? ";" : "") << fmt(r.busy_s[k], 6);
+    // What a merge of shards needs to give the one-process sweep's rows, summary and charts.
+    out << ',' << hex(r.tour_hash) << ',';
+    for (std::size_t k = 0; k < r.trace.size(); ++k) {
+      out << (k ? ";" : "") << r.trace[k].iteration << ':' << fmt(r.trace[k].wall_s, 6) << ':' << exact(r.trace[k].best_length);
+    }
+    out << ',' << csv_field(r.cell.instance) << ',' << r.sweep_index << ',' << r.sweep_runs << ',' << r.sweep_id << ','
+        << r.shard << ',' << r.version;
     out << '\n';
   }
   return out.str();
@@ -501,6 +556,249 @@ std::vector<std::string> write_plots(const std::vector<BenchRun>& runs, const st
     }
   }
   return written;
+}
+
+std::string Shard::text() const { return std::to_string(k) + "/" + std::to_string(n); }
+
+Shard parse_shard(const std::string& text) {
+  const auto slash = text.find('/');
+  auto number = [&](const std::string& part, std::size_t& v) {
+    auto r = std::from_chars(part.data(), part.data() + part.size(), v);
+    return !part.empty() && r.ec == std::errc() && r.ptr == part.data() + part.size();
+  };
+  Shard sh;
+  if (slash == std::string::npos || !number(text.substr(0, slash), sh.k) || !number(text.substr(slash + 1), sh.n) ||
+      sh.n < 1 || sh.k >= sh.n || sh.n > 1000000) {
+    throw UserError("--shard must be K/N with 0 <= K < N, the K-th (0-based) of N slices (got \"" + text + "\")");
+  }
+  return sh;
+}
+
+std::string sweep_fingerprint(const std::vector<SweepRun>& sweep, const std::string& version) {
+  std::uint64_t h = fnv1a(kFnvOffset, "acobench " + version);
+  for (const SweepRun& r : sweep) {
+    const BenchCell& c = r.cell;
+    h = fnv1a(h, c.instance + "|" + c.algorithm + "|" + c.local_search + "|" + exact(c.alpha) + "|" + exact(c.beta) + "|" +
+                     exact(c.rho) + "|" + std::to_string(c.ants) + "|" + std::to_string(c.iterations) + "|" +
+                     std::to_string(c.threads) + "|" + exact(c.time_limit_s) + "|" + std::to_string(r.seed));
+  }
+  return hex(h);
+}
+
+void stamp_sweep(std::vector<BenchRun>& runs, const std::vector<std::size_t>& sweep_index, const std::string& sweep_id,
+                 std::size_t sweep_runs, const Shard& shard, const std::string& version) {
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    runs[i].sweep_index = sweep_index[i];
+    runs[i].sweep_id = sweep_id;
+    runs[i].sweep_runs = sweep_runs;
+    runs[i].shard = shard.whole() ? "" : shard.text();
+    runs[i].version = version;
+  }
+}
+
+namespace {
+
+std::vector<std::string> split_csv_line(const std::string& line) {
+  std::vector<std::string> fields(1);
+  bool quoted = false;
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    const char c = line[i];
+    if (quoted) {
+      if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
+        fields.back() += '"';
+        ++i;
+      } else if (c == '"') {
+        quoted = false;
+      } else {
+        fields.back() += c;
+      }
+    } else if (c == '"') {
+      quoted = true;
+    } else if (c == ',') {
+      fields.emplace_back();
+    } else {
+      fields.back() += c;
+    }
+  }
+  return fields;
+}
+
+std::vector<std::string> split(const std::string& text, char sep) {
+  std::vector<std::string> parts;
+  if (text.empty()) return parts;
+  std::string part;
+  std::istringstream in(text);
+  while (std::getline(in, part, sep)) parts.push_back(part);
+  return parts;
+}
+
+}  // namespace
+
+std::vector<BenchRun> read_runs_csv(const std::string& text, const std::string& path) {
+  std::vector<BenchRun> runs;
+  std::istringstream in(text);
+  std::string line;
+  std::size_t line_no = 0;
+  std::map<std::string, std::size_t> col;
+  const auto optima = known_optima();
+  while (std::getline(in, line)) {
+    ++line_no;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line.empty()) continue;
+    const std::vector<std::string> f = split_csv_line(line);
+    if (col.empty()) {
+      for (std::size_t k = 0; k < f.size(); ++k) col[f[k]] = k;
+      for (const char* needed : {"instance", "n", "algorithm", "alpha", "beta", "rho", "ants", "iterations", "threads", "seed",
+                                 "length", "gap_pct", "wall_s", "local_search", "time_limit_s", "iterations_done", "busy_s",
+                                 "tour_hash", "trace", "instance_path", "sweep_index", "sweep_runs", "sweep", "shard", "version"}) {
+        if (!col.count(needed)) {
+          throw UserError(path, line_no, "not a runs CSV of acobench " + std::string("(no column \"") + needed +
+                                             "\"; shards and merges need this version's columns)");
+        }
+      }
+      continue;
+    }
+    auto field = [&](const char* name) -> const std::string& {
+      const std::size_t k = col.at(name);
+      if (k >= f.size()) throw UserError(path, line_no, "the row has " + std::to_string(f.size()) + " fields, the header more");
+      return f[k];
+    };
+    auto number = [&](const char* name, double empty_value) {
+      const std::string& v = field(name);
+      if (v.empty()) return empty_value;
+      double x = 0;
+      auto r = std::from_chars(v.data(), v.data() + v.size(), x);
+      if (r.ec != std::errc() || r.ptr != v.data() + v.size()) {
+        throw UserError(path, line_no, std::string("column ") + name + ": \"" + v + "\" is not a number");
+      }
+      return x;
+    };
+    auto whole = [&](const char* name) {
+      const double x = number(name, 0);
+      if (x < 0 || x != std::floor(x) || x > 1e15) {
+        throw UserError(path, line_no, std::string("column ") + name + ": \"" + field(name) + "\" is not a whole number");
+      }
+      return static_cast<std::uint64_t>(x);
+    };
+    BenchRun r;
+    r.name = field("instance");
+    r.n = whole("n");
+    r.cell.instance = field("instance_path");
+    r.cell.algorithm = field("algorithm");
+    r.alpha = r.cell.alpha = number("alpha", 1);
+    r.beta = r.cell.beta = number("beta", -1);
+    r.rho = r.cell.rho = number("rho", -1);
+    r.ants = r.cell.ants = static_cast<int>(whole("ants"));
+    r.cell.iterations = static_cast<int>(whole("iterations"));
+    r.cell.threads = static_cast<int>(whole("threads"));
+    r.cell.local_search = field("local_search");
+    r.cell.time_limit_s = number("time_limit_s", 0);
+    r.seed = whole("seed");
+    r.length = number("length", 0);
+    if (!field("gap_pct").empty()) {
+      auto it = optima.find(r.name);
+      r.optimum = it != optima.end() ? it->second : r.length / (1.0 + number("gap_pct", 0) / 100.0);
+    }
+    r.wall_s = number("wall_s", 0);
+    r.iterations_done = static_cast<int>(whole("iterations_done"));
+    for (const std::string& b : split(field("busy_s"), ';')) {
+      double x = 0;
+      std::from_chars(b.data(), b.data() + b.size(), x);
+      r.busy_s.push_back(x);
+    }
+    const std::string& h = field("tour_hash");
+    auto hr = std::from_chars(h.data(), h.data() + h.size(), r.tour_hash, 16);
+    if (h.size() != 16 || hr.ec != std::errc()) throw UserError(path, line_no, "column tour_hash: \"" + h + "\" is not 16 hex digits");
+    for (const std::string& point : split(field("trace"), ';')) {
+      const std::vector<std::string> t = split(point, ':');
+      aco::TracePoint tp;
+      if (t.size() != 3 || std::from_chars(t[0].data(), t[0].data() + t[0].size(), tp.iteration).ec != std::errc() ||
+          std::from_chars(t[1].data(), t[1].data() + t[1].size(), tp.wall_s).ec != std::errc() ||
+          std::from_chars(t[2].data(), t[2].data() + t[2].size(), tp.best_length).ec != std::errc()) {
+        throw UserError(path, line_no, "column trace: \"" + point + "\" is not ITERATION:SECONDS:LENGTH");
+      }
+      r.trace.push_back(tp);
+    }
+    r.sweep_index = whole("sweep_index");
+    r.sweep_runs = whole("sweep_runs");
+    r.sweep_id = field("sweep");
+    r.shard = field("shard");
+    r.version = field("version");
+    runs.push_back(std::move(r));
+  }
+  if (col.empty()) throw UserError(path, 0, "empty: not a runs CSV of acobench");
+  return runs;
+}
+
+std::vector<BenchRun> merge_shards(const std::vector<std::string>& paths) {
+  if (paths.empty()) throw UserError("merge needs the shards' CSV files");
+  struct Part {
+    std::string path;
+    Shard shard;
+    std::vector<BenchRun> runs;
+  };
+  std::vector<Part> parts;
+  for (const std::string& p : paths) {
+    Part part{p, {}, read_runs_csv(read_file(p), p)};
+    if (part.runs.empty()) throw UserError(p, 0, "no runs: a shard with no rows (was it cut short?)");
+    const BenchRun& first = part.runs.front();
+    part.shard = first.shard.empty() ? Shard{} : parse_shard(first.shard);
+    for (const BenchRun& r : part.runs) {
+      if (r.sweep_id != first.sweep_id || r.shard != first.shard || r.version != first.version) {
+        throw UserError(p, 0, "rows of different sweeps or shards in one file");
+      }
+    }
+    parts.push_back(std::move(part));
+  }
+  const Part& ref = parts.front();
+  const BenchRun& r0 = ref.runs.front();
+  std::vector<const Part*> by_k(ref.shard.n, nullptr);
+  for (const Part& part : parts) {
+    const BenchRun& r = part.runs.front();
+    if (r.version != r0.version) {
+      throw UserError(part.path, 0, "written by acobench " + r.version + ", " + ref.path + " by acobench " + r0.version +
+                                        ": shards of one sweep come from one version");
+    }
+    if (r.sweep_id != r0.sweep_id || r.sweep_runs != r0.sweep_runs) {
+      throw UserError(part.path, 0, "a shard of another sweep (sweep " + r.sweep_id + ", " + ref.path + " is of sweep " +
+                                        r0.sweep_id + "): its instances, options or seeds differ");
+    }
+    if (part.shard.n != ref.shard.n) {
+      throw UserError(part.path, 0, "shard " + part.shard.text() + " of a split into " + std::to_string(part.shard.n) + ", " +
+                                        ref.path + " is of a split into " + std::to_string(ref.shard.n));
+    }
+    if (by_k[part.shard.k]) {
+      throw UserError(part.path, 0, "shard " + part.shard.text() + " is given twice (also " + by_k[part.shard.k]->path + ")");
+    }
+    by_k[part.shard.k] = &part;
+  }
+  for (std::size_t k = 0; k < by_k.size(); ++k) {
+    if (!by_k[k]) {
+      throw UserError("shard " + Shard{k, ref.shard.n}.text() + " of sweep " + r0.sweep_id + " is missing (" +
+                      std::to_string(parts.size()) + " of " + std::to_string(ref.shard.n) + " shards given)");
+    }
+  }
+  std::vector<BenchRun> all(r0.sweep_runs);
+  std::vector<char> seen(r0.sweep_runs, 0);
+  for (const Part& part : parts) {
+    std::size_t expected = 0;
+    for (std::size_t i = part.shard.k; i < r0.sweep_runs; i += part.shard.n) ++expected;
+    for (const BenchRun& r : part.runs) {
+      if (r.sweep_index >= r0.sweep_runs || !part.shard.holds(r.sweep_index) || seen[r.sweep_index]) {
+        throw UserError(part.path, 0, "run " + std::to_string(r.sweep_index) + " does not belong to shard " + part.shard.text() +
+                                          " or is there twice");
+      }
+      seen[r.sweep_index] = 1;
+      all[r.sweep_index] = r;
+      all[r.sweep_index].shard.clear();  // the merge is the whole sweep
+    }
+    if (part.runs.size() != expected) {
+      throw UserError(part.path, 0, "shard " + part.shard.text() + " has " + std::to_string(part.runs.size()) + " of its " +
+                                        std::to_string(expected) + " runs: it was cut short (a time limit or --time-budget?)");
+    }
+  }
+  fill_time_to_target(all);
+  return all;
 }
 
 }  // namespace app
