@@ -301,6 +301,11 @@ class Choices(unittest.TestCase):
         self.assertEqual(job.default_outputs("/b/x.kicad_pcb", "linuxcnc"), ("/b/x-drill.ngc", "/b/x-drill-setup.html"))
         self.assertEqual(job.default_outputs("/b/x.kicad_pcb", "haas")[0], "/b/x-drill.nc")
 
+    def test_an_unset_drill_origin_is_named(self):
+        self.assertIn("not set", job.origin_warning("drill-origin", (0.0, 0.0)))
+        self.assertIsNone(job.origin_warning("drill-origin", (62.23, -153.67)))
+        self.assertIsNone(job.origin_warning("lower-left", (0.0, 0.0)))
+
     def test_machine_list_is_acodrills(self):
         classes = dict(job.machine_classes(ACODRILL))
         self.assertIn("router", classes)

@@ -102,6 +102,9 @@ def main(argv=None):
         options = list(rest)
         if origin is not None:
             options += ["--origin", job.resolve_origin(origin, drill_origin(board))]
+            unset_origin = job.origin_warning(origin, drill_origin(board))
+            if unset_origin:
+                warnings.append(unset_origin)
         quiet = "-q" in rest or "--quiet" in rest
         if not quiet:
             for w in warnings:

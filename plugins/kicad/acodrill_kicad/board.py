@@ -8,8 +8,12 @@ import pcbnew
 from .drills import Drill
 
 
+# Internal units per mm: pcbnew.IU_PER_MM in KiCad 6, pcbnew.pcbIUScale.IU_PER_MM from KiCad 7 on.
+_IU_PER_MM = float(pcbnew.pcbIUScale.IU_PER_MM if hasattr(pcbnew, "pcbIUScale") else pcbnew.IU_PER_MM)
+
+
 def _mm(iu) -> float:
-    return float(iu) / pcbnew.IU_PER_MM
+    return float(iu) / _IU_PER_MM
 
 
 def _via_type_through() -> int:

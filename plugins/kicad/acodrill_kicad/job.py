@@ -82,6 +82,14 @@ def resolve_origin(origin: str, drill_origin_xy: Optional[Tuple[float, float]]) 
     return origin
 
 
+def origin_warning(origin: str, drill_origin_xy: Optional[Tuple[float, float]]) -> Optional[str]:
+    """A word when program zero is the drill/place file origin and the board never set one."""
+    if origin in ("drill-origin", "aux") and drill_origin_xy is not None and drill_origin_xy == (0.0, 0.0):
+        return ("the board's drill/place file origin is not set (it is the page's corner): set it in pcbnew "
+                "(Place > Drill/Place File Origin) or choose another program zero")
+    return None
+
+
 def machine_classes(acodrill: str = "acodrill") -> List[Tuple[str, str]]:
     """`acodrill machines`: (name, description) a line."""
     out = run_acodrill(acodrill, ["machines"]).stdout
@@ -253,6 +261,7 @@ def plan_for_dialog(drills: Sequence[Drill], warnings: Sequence[str], drill_orig
         return Outcome(False, error_line(done.stderr))
     text = summary(done.report or {})
     text += f"\nProgram: {program}" + (f"\nSetup sheet: {sheet}" if sheet else "")
-    for w in warnings:
+    unset_origin = origin_warning(choices.origin, drill_origin_xy)
+    for w in list(warnings) + ([unset_origin] if unset_origin else []):
         text += f"\nWarning: {w}"
     return Outcome(True, text, program, sheet)
