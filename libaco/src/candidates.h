@@ -11,6 +11,14 @@ namespace aco::detail {
 
 class Team;  // parallel.h
 
+// The stages of the lists, each in its file: nearest.cpp (k nearest, joined
+// where they fall apart), spanning_forest.h and alpha_nearness.cpp (the ascent
+// and alpha-nearness).
+
+// Candidate rows a worker takes at a time: small enough that a worker that
+// comes late, or is put aside, holds up little.
+constexpr std::size_t kRowChunk = 64;
+
 struct Candidates {
   int k = 0;
   std::vector<HoleIndex> list;  // n * k, row i = the k nearest holes of i

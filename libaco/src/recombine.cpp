@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <iterator>
 
+#include "colony.h"
+
 namespace aco::detail {
 
 namespace {
@@ -207,6 +209,43 @@ void DiffMerger::build(const std::vector<HoleIndex>& ref, HoleIndex first_next, 
   // From ref[0] on, with first_next after it where that is its neighbour.
   std::rotate(out.begin(), std::find(out.begin(), out.end(), ref[0]), out.end());
   if (m > 2 && out[1] != first_next && out[m - 1] == first_next) std::reverse(out.begin() + 1, out.end());
+}
+
+// The focused colony's round: every ant that improved the reference left its
+// route as an exchange of edges against it (route_diff); the best ant's
+// exchange and the others' that touch other holes are applied together
+// (DiffMerger), their gains added, when that beats the best ant alone.
+void Colony::merge_improvements(int ib, const std::vector<HoleIndex>*& ib_route, double& ib_len) {
+  // The other ants' improvements elsewhere on the route, added to the best's.
+  run_.improving.clear();
+  for (int k = 0; k < p_.ants; ++k) {
+    if (run_.work[k].improves) run_.improving.push_back(k);
+  }
+  std::sort(run_.improving.begin(), run_.improving.end(), [&](int a, int b) {
+    return run_.work[a].length < run_.work[b].length || (run_.work[a].length == run_.work[b].length && a < b);
+  });
+  // An open path's V keeps the successor it has in R, or in the best ant's
+  // route if that ant changed it; no other ant may change it.
+  const HoleIndex v = ref_route_[0];
+  const bool best_moves_v = space_.open() && run_.work[ib].diff.touches(v);
+  run_.diffs.clear();
+  run_.diff_ants.clear();
+  for (int k : run_.improving) {
+    if (k == ib || !space_.open() || !run_.work[k].diff.touches(v)) {
+      run_.diffs.push_back(&run_.work[k].diff);
+      run_.diff_ants.push_back(k);
+    }
+  }
+  if (run_.diffs.size() >= 2 &&
+      run_.merger.merge(ref_route_, ref_pos_, run_.diffs, best_moves_v ? (*ib_route)[1] : ref_route_[1], run_.merged) >= 2) {
+    // The exchanges touch disjoint holes, so their gains add up.
+    double merged_len = ref_len_;
+    for (std::size_t d : run_.merger.applied()) merged_len += run_.work[run_.diff_ants[d]].length - ref_len_;
+    if (merged_len < ib_len - 1e-9) {
+      ib_route = &run_.merged;
+      ib_len = merged_len;
+    }
+  }
 }
 
 }  // namespace aco::detail

@@ -1,0 +1,128 @@
+// The solver's entry points: resolve() fills in each algorithm's defaults
+// for the problem's size, solve() numbers large inputs along a Hilbert curve
+// when their order jumps about the plate and runs the colony on one team.
+#include <omp.h>
+
+#include <limits>
+#include <numeric>
+
+#include "aco/error.h"
+#include "aco/solve.h"
+#include "colony.h"
+#include "hilbert.h"
+
+namespace aco {
+
+using detail::kCurveOrderFrom;
+using detail::kJumpyOrder;
+using detail::kManyAntsFrom;
+using detail::uses_alpha_lists;
+
+Params resolve(const Params& in, std::size_t n) {
+  Params p = in;
+  // (Measured: ACS with local search beats this MMAS at every TSPLIB size we
+  // benchmark, so ACS is the default algorithm; see Params.)
+  const bool ls = p.local_search != LocalSearch::None;
+  switch (p.algorithm) {
+    case Algorithm::AntSystem:
+      if (p.beta < 0) p.beta = 4.0;  // the thesis's sets use 4 and 4.5
+      if (p.rho < 0) p.rho = 0.5;
+      if (p.ants <= 0) p.ants = static_cast<int>(std::clamp<std::size_t>(n, 1, 100));
+      break;
+    case Algorithm::MaxMinAntSystem:
+      if (p.beta < 0) p.beta = 2.0;
+      if (p.rho < 0) p.rho = ls ? 0.2 : 0.02;
+      if (p.ants <= 0) p.ants = ls ? 10 : static_cast<int>(std::clamp<std::size_t>(n, 1, 100));
+      break;
+    case Algorithm::AntColonySystem:
+    case Algorithm::FocusedAcs:
+      if (p.beta < 0) p.beta = 2.0;
+      if (p.rho < 0) p.rho = 0.1;
+      // Focused ants above kManyAntsFrom holes: 20, since the improvements of
+      // an iteration's ants are merged and an iteration's serial part grows
+      // with n. Measured at 2 threads, seeds 1-3: brd14051 at 65 s 0.138 0.140
+      // 0.166 % with 10, 0.126 0.111 0.116 % with 20, 0.161 0.134 0.162 %
+      // with 40; d15112 at 64 s 0.174 0.170 0.176 % with 10, 0.160 0.127
+      // 0.176 % with 20; E100k at 60 s (seed 1) 226.72e6 and 226.69e6. On
+      // pcb3038 (15 s, 5 seeds) 10, 20 and 40 were alike: 0.110, 0.118, 0.102 %.
+      if (p.ants <= 0) p.ants = p.algorithm == Algorithm::FocusedAcs && n > kManyAntsFrom ? 20 : 10;
+      break;
+  }
+  if (p.focus_edges <= 0) p.focus_edges = 16;
+  // 5 alpha-nearest measured better than the 12 nearest (see kAlphaFrom);
+  // where the lists are the nearest (beyond kAlphaLimit) they keep their 12.
+  if (p.candidates <= 0) p.candidates = uses_alpha_lists(n, p.local_search) ? 5 : ls ? 12 : 20;
+  // Without a budget, the work grows with n: 300 iterations up to a few
+  // thousand holes, fewer beyond (2e6 / n: 20 at 100 000, 3 at a million). A
+  // focused iteration costs a small part of a whole-route one, so it gets ten
+  // times as many, and a longer patience (kicks come every kKickAfter).
+  const bool focused = p.algorithm == Algorithm::FocusedAcs;
+  if (p.iterations <= 0) {
+    const double work = focused ? 2e7 : 2e6;
+    p.iterations = p.time_limit_s > 0 ? std::numeric_limits<int>::max()
+                                      : static_cast<int>(std::clamp<double>(work / std::max<std::size_t>(n, 1), focused ? 20 : 3,
+                                                                            focused ? 3000 : 300));
+  }
+  // Stop early on stagnation only when the user set no budget of their own:
+  // --iterations N means N iterations (the thesis's runs count on it).
+  if (p.stall_iterations == 0) {
+    p.stall_iterations = (p.time_limit_s > 0 || in.iterations > 0) ? -1 : (focused ? 600 : 100);
+  }
+  if (p.threads <= 0) p.threads = std::max(1, omp_get_num_procs());
+  return p;
+}
+
+Solution solve(const Problem& problem, const Params& params) {
+  params.validate();
+  const std::size_t n = problem.points.size();
+  for (const Point2& pt : problem.points) {
+    if (!std::isfinite(pt.x) || !std::isfinite(pt.y)) throw InputError("a point has a non-finite coordinate");
+  }
+  Params p = resolve(params, n);
+  if (n <= 3) {
+    // Nothing to search: try every order of up to 3 points.
+    Solution s;
+    s.algorithm = p.algorithm;
+    s.threads = p.threads;
+    s.ants = p.ants;
+    s.thread_busy_s.assign(static_cast<std::size_t>(p.threads), 0.0);
+    s.stop_reason = "trivial";
+    Order o(n);
+    std::iota(o.begin(), o.end(), 0);
+    s.order = o;
+    s.length = route_length(problem, o);
+    while (std::next_permutation(o.begin(), o.end())) {
+      const double len = route_length(problem, o);
+      if (len < s.length - 1e-12) {
+        s.length = len;
+        s.order = o;
+      }
+    }
+    s.trace.push_back({0, 0.0, s.length});
+    return s;
+  }
+  const detail::Clock started;
+  Problem numbered;
+  std::vector<HoleIndex> input_index;  // by the colony's hole number: the hole's index in problem.points
+  if (n >= kCurveOrderFrom) input_index = detail::hilbert_order(problem.points);
+  if (!input_index.empty() && detail::order_stretch(problem.points, input_index) <= kJumpyOrder) input_index.clear();
+  if (!input_index.empty()) {
+    numbered = problem;
+    for (std::size_t i = 0; i < n; ++i) numbered.points[i] = problem.points[input_index[i]];
+  }
+  // One team for the whole solve: the candidate lists' rows and ascent and
+  // the iterations all run on it, and a worker that starts late is never waited for.
+  Solution solution;
+  detail::Team::run(p.threads, [&](detail::Team& team) {
+    detail::Colony colony(input_index.empty() ? problem : numbered, p, team, started);
+    solution = colony.run();
+  });
+  // The same route through the same points: its length is unchanged.
+  if (!input_index.empty()) {
+    for (HoleIndex& h : solution.order) h = input_index[h];
+  }
+  return solution;
+}
+
+
+}  // namespace aco
