@@ -145,8 +145,8 @@ int main(int argc, char** argv) {
   slurm_cmd->add_option("--partition", partition, "Slurm partition (sbatch --partition); default: the cluster's");
   slurm_cmd->add_option("--time", slurm_time, "Time limit of each task (sbatch --time, e.g. 2:00:00)");
   slurm_cmd->add_option("--cpus-per-task", cpus_per_task,
-                        "CPUs of each task (default: the largest --threads, else 1); the sweep's default threads follow "
-                        "SLURM_CPUS_PER_TASK")
+                        "CPUs of each task (default: the sweep's largest thread count, which without --threads is "
+                        "this machine's cores); inside a task the sweep's default threads follow SLURM_CPUS_PER_TASK")
       ->check(CLI::Range(1, 4096));
   slurm_cmd->add_flag("--submit", submit, "Submit both jobs with sbatch (else print how)");
   slurm_cmd->fallthrough();

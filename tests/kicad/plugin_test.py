@@ -301,6 +301,16 @@ class Choices(unittest.TestCase):
         self.assertEqual(job.default_outputs("/b/x.kicad_pcb", "linuxcnc"), ("/b/x-drill.ngc", "/b/x-drill-setup.html"))
         self.assertEqual(job.default_outputs("/b/x.kicad_pcb", "haas")[0], "/b/x-drill.nc")
 
+    def test_headless_arguments_in_any_order(self):
+        from acodrill_kicad.__main__ import parse
+
+        self.assertEqual(parse(["--machine", "router", "b.kicad_pcb", "-o", "x.nc", "--drill-files", "d"]),
+                         ("b.kicad_pcb", "x.nc", "acodrill", "d", None, ["--machine", "router"]))
+        self.assertEqual(parse(["board.pcb", "--acodrill", "/opt/acodrill", "--output=x.nc", "--origin=drill-origin"]),
+                         ("board.pcb", "x.nc", "/opt/acodrill", None, "drill-origin", []))
+        with self.assertRaises(SystemExit):
+            parse(["--dialect", "grbl", "board.pcb", "-o", "x.nc"])
+
     def test_an_unset_drill_origin_is_named(self):
         self.assertIn("not set", job.origin_warning("drill-origin", (0.0, 0.0)))
         self.assertIsNone(job.origin_warning("drill-origin", (62.23, -153.67)))

@@ -70,11 +70,18 @@ def parse(argv):
             origin = value(a)
         elif a.startswith("--origin="):
             origin = a.split("=", 1)[1]
-        elif board is None and not a.startswith("-"):
+        elif board is None and a.lower().endswith(".kicad_pcb"):
             board = a
         else:
             rest.append(a)
         k += 1
+    if board is None:
+        # A board file named otherwise: the first argument that is no option's value.
+        plain = [a for a in rest if not a.startswith("-")]
+        if rest and not rest[0].startswith("-"):
+            board = rest.pop(0)
+        elif plain:
+            raise SystemExit(_usage("give the board first, or a file ending in .kicad_pcb"))
     if board is None:
         raise SystemExit(_usage("give the board: BOARD.kicad_pcb"))
     if program is None:
