@@ -1,6 +1,7 @@
 // acobench: sweeps algorithms and their parameters over instances, writes one
 // CSV row per run, a summary per cell, the thesis's tables and SVG charts.
 #include <omp.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
@@ -47,10 +48,14 @@ std::vector<std::string> sweep_arguments(int argc, char** argv) {
                                                    "--summary", "--plots", "--shard"};
   static const std::set<std::string> flags = {"--submit"};
   std::vector<std::string> kept;
+  bool subcommand_seen = false;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     const std::string name = a.substr(0, a.find('='));
-    if (a == "slurm" && kept.size() + 1 == static_cast<std::size_t>(i)) continue;
+    if (a == "slurm" && !subcommand_seen) {
+      subcommand_seen = true;
+      continue;
+    }
     if (with_value.count(name)) {
       if (a.find('=') == std::string::npos) ++i;
       continue;
@@ -61,17 +66,18 @@ std::vector<std::string> sweep_arguments(int argc, char** argv) {
   return kept;
 }
 
-// Runs a command; its standard output, or a UserError with what it said.
+// Runs a command; its standard output (its errors go to ours as they come),
+// or a UserError when it fails.
 std::string run_command(const std::string& command) {
   std::string out;
-  FILE* p = ::popen((command + " 2>&1").c_str(), "r");
+  FILE* p = ::popen(command.c_str(), "r");
   if (!p) throw app::UserError("cannot run " + command);
   char buf[4096];
   while (std::fgets(buf, sizeof buf, p)) out += buf;
   const int status = ::pclose(p);
   if (status != 0) {
-    while (!out.empty() && (out.back() == '\n' || out.back() == '\r')) out.pop_back();
-    throw app::UserError(command + " failed: " + out);
+    throw app::UserError(command + " failed (exit " + std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : -1) +
+                         "; its message is above)");
   }
   return out;
 }
