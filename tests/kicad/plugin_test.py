@@ -298,8 +298,8 @@ class Choices(unittest.TestCase):
         self.assertEqual(job.plan_options(job.Choices(time_limit_s=0)), ["--machine", "router", "--origin", "lower-left"])
         with self.assertRaises(job.PlanError):
             job.plan_options(job.Choices(dialect="mach3"))
-        self.assertEqual(job.default_outputs("/b/x.kicad_pcb", "linuxcnc"), ("/b/x-drill.ngc", "/b/x-drill-setup.html"))
-        self.assertEqual(job.default_outputs("/b/x.kicad_pcb", "haas")[0], "/b/x-drill.nc")
+        self.assertEqual(job.default_program("/b/x.kicad_pcb", "linuxcnc"), "/b/x-drill.ngc")
+        self.assertEqual(job.default_program("/b/x.kicad_pcb", "haas"), "/b/x-drill.nc")
 
     def test_headless_arguments_in_any_order(self):
         from acodrill_kicad.__main__ import parse

@@ -33,9 +33,8 @@ def board_drills(board) -> Tuple[List[Drill], List[str]]:
             pos = pad.GetPosition()
             x, y = _mm(pos.x), -_mm(pos.y)
             plated = pad.GetAttribute() != pcbnew.PAD_ATTRIB_NPTH
-            what = f"pad {fp.GetReference()}-{pad.GetNumber() if hasattr(pad, 'GetNumber') else pad.GetName()}"
             if size.x == size.y:
-                drills.append(Drill(x, y, _mm(size.x), plated, None, what))
+                drills.append(Drill(x, y, _mm(size.x), plated))
                 continue
             # An oval drill: a slot as wide as its short side along its long
             # side, turned by the pad's orientation (counter-clockwise as seen
@@ -45,7 +44,7 @@ def board_drills(board) -> Tuple[List[Drill], List[str]]:
             along_x = size.x > size.y
             angle = math.radians(pad.GetOrientationDegrees())
             ux, uy = (math.cos(angle), math.sin(angle)) if along_x else (-math.sin(angle), math.cos(angle))
-            drills.append(Drill(x - half * ux, y - half * uy, width, plated, (x + half * ux, y + half * uy), what))
+            drills.append(Drill(x - half * ux, y - half * uy, width, plated, (x + half * ux, y + half * uy)))
     skipped = 0
     for track in board.GetTracks():
         if track.Type() != pcbnew.PCB_VIA_T:
@@ -54,7 +53,7 @@ def board_drills(board) -> Tuple[List[Drill], List[str]]:
             skipped += 1
             continue
         pos = track.GetPosition()
-        drills.append(Drill(_mm(pos.x), -_mm(pos.y), _mm(track.GetDrillValue()), True, None, "via"))
+        drills.append(Drill(_mm(pos.x), -_mm(pos.y), _mm(track.GetDrillValue()), True))
     if skipped:
         warnings.append(f"{skipped} blind, buried or micro via(s) not drilled: they do not go through the board")
     return drills, warnings

@@ -38,7 +38,7 @@ class DrillDialog(wx.Dialog):
         self.apart = row("Plated / non-plated", wx.RadioBox(self, choices=["together (a drill per diameter)",
                                                                             "apart (plated first)"]))
         self.budget = row("Time budget (s)", wx.SpinCtrlDouble(self, min=0.5, max=3600, initial=10, inc=1))
-        program, sheet = job.default_outputs(board_path, "grbl")
+        program = job.default_program(board_path, "grbl")
         self.program = row("Program", wx.FilePickerCtrl(self, path=program, style=wx.FLP_SAVE | wx.FLP_USE_TEXTCTRL))
         self.write_sheet = row("", wx.CheckBox(self, label="Write the setup sheet beside the program"))
         self.write_sheet.SetValue(True)
@@ -83,7 +83,7 @@ class DrillDialog(wx.Dialog):
         current = self.program.GetPath()
         stem = os.path.splitext(self.board_path)[0] + "-drill"
         if not current or os.path.splitext(current)[0] == stem:
-            self.program.SetPath(job.default_outputs(self.board_path, dialect)[0])
+            self.program.SetPath(job.default_program(self.board_path, dialect))
 
     def on_plan(self, _event):
         with wx.BusyInfo("acodrill is planning the drilling..."):

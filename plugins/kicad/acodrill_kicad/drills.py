@@ -20,7 +20,6 @@ class Drill:
     plated: bool
     # A slot (oval drill): the other end of its centre line; (x_mm, y_mm) is the first end.
     slot_end: Optional[Tuple[float, float]] = None
-    what: str = ""  # "pad U1-3" or "via": for messages
 
 
 def _number(v: float) -> str:

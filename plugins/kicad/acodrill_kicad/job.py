@@ -43,17 +43,14 @@ class Choices:
     origin: str = "lower-left"
     plated_apart: bool = False       # plated and non-plated holes with tools of their own, plated first
     time_limit_s: float = 10.0
-    program: str = ""                # "": beside the board (default_outputs)
-    setup_sheet: str = ""            # "": beside the program (PROGRAM-setup.html)
-    write_setup_sheet: bool = True
+    program: str = ""                # "": beside the board (default_program)
+    write_setup_sheet: bool = True   # PROGRAM-setup.html beside the program
     extra: List[str] = field(default_factory=list)  # further `acodrill plan` options
 
 
-def default_outputs(board_path: str, dialect: str) -> Tuple[str, str]:
-    """The program and setup sheet beside the board: BOARD-drill.nc (.ngc for
-    LinuxCNC, .gcode for GRBL and Marlin) and BOARD-drill-setup.html."""
-    stem = os.path.splitext(board_path)[0]
-    return stem + "-drill" + PROGRAM_EXTENSIONS.get(dialect, ".nc"), stem + "-drill-setup.html"
+def default_program(board_path: str, dialect: str) -> str:
+    """The program beside the board: BOARD-drill.nc (.ngc for LinuxCNC, .gcode for GRBL and Marlin)."""
+    return os.path.splitext(board_path)[0] + "-drill" + PROGRAM_EXTENSIONS.get(dialect, ".nc")
 
 
 def plan_options(choices: Choices, drill_origin_xy: Optional[Tuple[float, float]] = None) -> List[str]:
@@ -248,9 +245,9 @@ def plan_for_dialog(drills: Sequence[Drill], warnings: Sequence[str], drill_orig
     unless the choices name other paths, then the summary."""
     try:
         dialect = choices.dialect or machine_dialect(choices.machine, acodrill)
-        program = choices.program or default_outputs(board_path, dialect)[0]
+        program = choices.program or default_program(board_path, dialect)
         # The sheet goes beside the program: BOARD-drill.nc, BOARD-drill-setup.html.
-        sheet = (choices.setup_sheet or os.path.splitext(program)[0] + "-setup.html") if choices.write_setup_sheet else ""
+        sheet = os.path.splitext(program)[0] + "-setup.html" if choices.write_setup_sheet else ""
         options = plan_options(choices, drill_origin_xy) + ["--quiet"]
         if sheet:
             options += ["--setup-sheet", sheet]
