@@ -60,14 +60,14 @@ void add_solver_options(CLI::App* cmd, SolverArgs& a) {
   cmd->add_option("--threads", a.threads, "Worker threads (default: all cores)")->check(CLI::Range(1, 1024));
   cmd->add_option("--seed", a.seed, "Random seed; same input, options and seed give the same output (default 1)");
   cmd->add_option("--time-limit", a.time_limit, "Stop after S seconds of the whole run, reading the input included (0 = no limit); plan shares S among its tools by hole count")->check(CLI::Range(0.0, 1e7));
-  cmd->add_option("--iterations", a.iterations, "Colony iterations (default: 300, or until the time limit)")
+  cmd->add_option("--iterations", a.iterations, "Colony iterations (default: until the time limit; without one, fewer the more holes and ants: 3000 focused iterations of 10 ants up to 6667 holes, 300 acs/mmas/as)")
       ->check(CLI::Range(1, 100000000));
   cmd->add_option("--algorithm", a.algorithm,
                   "focused (default: ACS whose ants change a bounded number of the best route's edges, with a kick when "
                   "it stalls and a restart when kicks stop helping; measured best "
                   "from 198 to 15112 holes, docs/benchmarks.md), acs (Ant Colony System over whole routes), mmas "
                   "(MAX-MIN), as (the thesis's Ant System)");
-  cmd->add_option("--ants", a.ants, "Ants per iteration (default: 10 with local search, 20 for focused above 10 000 holes; else min(n,100))")
+  cmd->add_option("--ants", a.ants, "Ants per iteration (default: focused 10 up to 800 holes, 40 up to 10 000, 20 above; acs and mmas with local search 10; else min(n,100))")
       ->check(CLI::Range(1, 100000));
   cmd->add_option("--alpha", a.alpha, "Pheromone weight (default 1)")->check(CLI::Range(0.0, 100.0));
   cmd->add_option("--beta", a.beta, "Distance weight (default: as 4, mmas/acs 2)")->check(CLI::Range(0.0, 100.0));

@@ -3,6 +3,8 @@
 // when their order jumps about the plate and runs the colony on one team.
 #include <omp.h>
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
 #include <numeric>
 
@@ -17,6 +19,31 @@ using detail::kCurveOrderFrom;
 using detail::kJumpyOrder;
 using detail::kManyAntsFrom;
 using detail::uses_alpha_lists;
+
+namespace {
+
+// Ants an iteration of the focused colony, by the instance's size (measured
+// at 2 threads, whole process, median gap over seeds 1-5 unless said):
+// - up to kFullListLimit holes 10: there kicks are off and restarts (every
+//   kRestartAfter iterations) carry the search, and 40 ants make them four
+//   times as rare (u574 at 1 s: 0.00 % with 10, 0.08 % with 40);
+// - up to kManyAntsFrom 40: a round of 10 ants whose local searches vary 3x
+//   left the thread done first waiting about 5 % of the time, 40 win it back
+//   (pcb1173, 9 seeds: two threads at 0.96 of what the CPUs allow over 2000
+//   iterations, 0.95 over 200, against 0.89 and 0.84) and route no worse
+//   (pcb3038 at 15 s 0.023 % against 0.044 %, pla7397 at 91 s 0.071 %
+//   against 0.082 %; docs/benchmarks.md);
+// - above, 20, since there the improvements of an iteration's ants are merged
+//   and an iteration's serial part grows with n (seeds 1-3: brd14051 at 65 s
+//   0.138 0.140 0.166 % with 10, 0.126 0.111 0.116 % with 20, 0.161 0.134
+//   0.162 % with 40; d15112 at 64 s 0.174 0.170 0.176 % with 10, 0.160 0.127
+//   0.176 % with 20).
+int focused_ants(std::size_t n) {
+  if (n <= detail::kFullListLimit) return 10;
+  return n > kManyAntsFrom ? 20 : 40;
+}
+
+}  // namespace
 
 Params resolve(const Params& in, std::size_t n) {
   Params p = in;
@@ -38,14 +65,7 @@ Params resolve(const Params& in, std::size_t n) {
     case Algorithm::FocusedAcs:
       if (p.beta < 0) p.beta = 2.0;
       if (p.rho < 0) p.rho = 0.1;
-      // Focused ants above kManyAntsFrom holes: 20, since the improvements of
-      // an iteration's ants are merged and an iteration's serial part grows
-      // with n. Measured at 2 threads, seeds 1-3: brd14051 at 65 s 0.138 0.140
-      // 0.166 % with 10, 0.126 0.111 0.116 % with 20, 0.161 0.134 0.162 %
-      // with 40; d15112 at 64 s 0.174 0.170 0.176 % with 10, 0.160 0.127
-      // 0.176 % with 20; E100k at 60 s (seed 1) 226.72e6 and 226.69e6. On
-      // pcb3038 (15 s, 5 seeds) 10, 20 and 40 were alike: 0.110, 0.118, 0.102 %.
-      if (p.ants <= 0) p.ants = p.algorithm == Algorithm::FocusedAcs && n > kManyAntsFrom ? 20 : 10;
+      if (p.ants <= 0) p.ants = p.algorithm == Algorithm::FocusedAcs ? focused_ants(n) : 10;
       break;
   }
   if (p.focus_edges <= 0) p.focus_edges = 16;
@@ -54,19 +74,27 @@ Params resolve(const Params& in, std::size_t n) {
   if (p.candidates <= 0) p.candidates = uses_alpha_lists(n, p.local_search) ? 5 : ls ? 12 : 20;
   // Without a budget, the work grows with n: 300 iterations up to a few
   // thousand holes, fewer beyond (2e6 / n: 20 at 100 000, 3 at a million). A
-  // focused iteration costs a small part of a whole-route one, so it gets ten
-  // times as many, and a longer patience (kicks come every kKickAfter).
+  // focused iteration of 10 ants costs a small part of a whole-route one, so
+  // it gets ten times as many, and a longer patience (kicks come every
+  // kKickAfter). These counts are for 10 ants an iteration (20 above
+  // kManyAntsFrom holes); with more ants, fewer iterations, so that a job
+  // without a budget does the same ants' work whatever --ants is.
   const bool focused = p.algorithm == Algorithm::FocusedAcs;
+  const double per_ant = focused ? (n > kManyAntsFrom ? 20.0 : 10.0) / p.ants : 1.0;
   if (p.iterations <= 0) {
     const double work = focused ? 2e7 : 2e6;
-    p.iterations = p.time_limit_s > 0 ? std::numeric_limits<int>::max()
-                                      : static_cast<int>(std::clamp<double>(work / std::max<std::size_t>(n, 1), focused ? 20 : 3,
-                                                                            focused ? 3000 : 300));
+    p.iterations = p.time_limit_s > 0
+                       ? std::numeric_limits<int>::max()
+                       : static_cast<int>(std::ceil(
+                             per_ant * std::clamp<double>(work / std::max<std::size_t>(n, 1), focused ? 20 : 3,
+                                                          focused ? 3000 : 300)));
   }
   // Stop early on stagnation only when the user set no budget of their own:
   // --iterations N means N iterations (the thesis's runs count on it).
   if (p.stall_iterations == 0) {
-    p.stall_iterations = (p.time_limit_s > 0 || in.iterations > 0) ? -1 : (focused ? 600 : 100);
+    p.stall_iterations = (p.time_limit_s > 0 || in.iterations > 0)
+                             ? -1
+                             : (focused ? static_cast<int>(std::ceil(600 * per_ant)) : 100);
   }
   if (p.threads <= 0) p.threads = std::max(1, omp_get_num_procs());
   return p;
