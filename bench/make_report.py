@@ -187,7 +187,7 @@ def main():
               "and the same for `acs` at 200 iterations: the same iterations on 1 and 2 threads, median wall time of "
               "the solver (its whole run, candidate lists included); the tours are identical (same seed). Each seed "
               "runs on 1 and then on 2 threads, so both see the machine in the same state. A focused iteration on "
-              "pcb1173 lasts about 1.5 ms on one thread: in 200 of them (0.3 s) the solver's start weighs. By timing "
+              "pcb1173 lasted about 1.5 ms on one thread with 10 ants: in 200 of them (0.3 s) the solver's start weighs. By timing "
               "instrumentation at 25c8cc1 and 21f63d6 (not committed), the candidate lists and the first route took about 30 ms on one "
               "thread, 23.6 of them the ascent's 100 spanning trees; on two threads about 20-22 ms, the ascent 14.7 ms "
               "(the two strips' trees 12.4-12.7 ms each, the joins and steps between them 1.8 ms on one thread), and "
@@ -207,15 +207,12 @@ def main():
               "the new edges each ant made (known only once built: every route built before any search), and 1.4 % in "
               "the best order, known only afterwards. With rounds of 10 ants whose searches vary this much, about that share of "
               "two threads' time goes to waiting. 2000 iterations are nearer the work of 200 whole-route ACS "
-              "iterations. Larger rounds win that wait back (measured at b5f8c4e, not the default yet: the same "
-              "ratio as the second table below, 9 seeds, `acobench ... --ants N`): with 40 ants a round two threads "
-              "came to 0.96 (0.89-1.01) of what the CPUs allow over 2000 iterations and 0.95 (0.80-1.07) over 200, "
-              "against 0.89 (0.75-0.97) and 0.84 (0.77-0.93) with the default 10 in the same hour, and 20 ants "
-              "measured no better than 10 (0.88). At the same budgets 40 ants did not cost quality: pcb3038 in 15 s "
-              "median 0.023 % against 0.044 % (`acodrill tsp --time-limit 15 --threads 2 --ants 40`, seeds 1-5, "
-              "run alternately), pla7397 in 91 s 0.071 % against 0.082 %. Making it the default (below 10 000 "
-              "holes) changes every route and the time of a job without a budget, so it waits for the whole gap "
-              "table to be measured again.\n")
+              "iterations. Larger rounds win that wait back, and since 7ff92fe a focused round has 40 ants from 801 "
+              "to 10 000 holes, pcb1173 among them, so the tables below are of rounds of 40, an iteration four times "
+              "the work it was (measured at b5f8c4e, in the same hour, the same ratio as the second table below, "
+              "9 seeds, `acobench ... --ants N`: with 40 ants two threads came to 0.96 (0.89-1.01) of what the "
+              "CPUs allow over 2000 iterations and 0.95 (0.80-1.07) over 200, with 10 to 0.89 (0.75-0.97) and "
+              "0.84 (0.77-0.93), with 20 to 0.88).\n")
         w(f"On {title}:\n")
         w("| algorithm | iterations | threads | median wall s | speedup | efficiency |")
         w("|---|---:|---:|---:|---:|---:|")
