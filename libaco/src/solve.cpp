@@ -32,7 +32,8 @@ namespace {
 //   (pcb1173, 9 seeds: two threads at 0.96 of what the CPUs allow over 2000
 //   iterations, 0.95 over 200, against 0.89 and 0.84) and route no worse
 //   (pcb3038 at 15 s 0.023 % against 0.044 %, pla7397 at 91 s 0.071 %
-//   against 0.082 %; docs/benchmarks.md);
+//   against 0.082 %, run alternately; the gap table's later run at 7ff92fe
+//   gave 0.046 and 0.071 %, seeds that end near 0.1 % setting the median);
 // - above, 20, since there the improvements of an iteration's ants are merged
 //   and an iteration's serial part grows with n (seeds 1-3: brd14051 at 65 s
 //   0.138 0.140 0.166 % with 10, 0.126 0.111 0.116 % with 20, 0.161 0.134
