@@ -74,7 +74,7 @@ void add_solver_options(CLI::App* cmd, SolverArgs& a) {
   cmd->add_option("--rho", a.rho, "Evaporation rate in (0,1] (default: as 0.5, mmas 0.2, acs 0.1)");
   cmd->add_option("--local-search", a.local_search, "none | 2opt | 2opt+oropt | 3opt (default: 2-opt, Or-opt, and sequential 3-opt moves that go deeper, Lin-Kernighan style, when none gains)");
   cmd->add_option("--focus-edges", a.focus_edges,
-                  "focused: new edges an ant makes on the best route before it copies the rest; each ant draws half to four times this (default 16, 32 above 10 000 holes)")
+                  "focused: new edges an ant makes on the best route before it copies the rest (default 16)")
       ->check(CLI::Range(1, 1000000));
 }
 

@@ -48,7 +48,6 @@ int focused_ants(std::size_t n) {
 
 Params resolve(const Params& in, std::size_t n) {
   Params p = in;
-  const bool focused = p.algorithm == Algorithm::FocusedAcs;
   // (Measured: ACS with local search beats this MMAS at every TSPLIB size we
   // benchmark, so ACS is the default algorithm; see Params.)
   const bool ls = p.local_search != LocalSearch::None;
@@ -70,16 +69,7 @@ Params resolve(const Params& in, std::size_t n) {
       if (p.ants <= 0) p.ants = p.algorithm == Algorithm::FocusedAcs ? focused_ants(n) : 10;
       break;
   }
-  // A focused ant's bound on new edges: 16 (each ant draws half to four
-  // times it, rounds.cpp); above kManyAntsFrom 32, whose ants reach further
-  // (2 threads, seeds 1-3, median gap 16 -> 32: d15112 at 64 s 0.110 ->
-  // 0.099 %, brd14051 at 65 s 0.086 -> 0.069 %; 8 and 64 worse on d15112,
-  // 0.127 and 0.125 %). On pcb3038 (15 s, seeds 1-10) 32 measured no
-  // better: 0.057 % against 0.051 %. On the scale section's panels (seed 1,
-  // above their references, 16 -> 32) alike: 33 000 uniform at 30 s 0.63 ->
-  // 0.69 %, pla7397x5 at 60 s 0.32 -> 0.22 %, 100 000 uniform at 60 s 0.592
-  // -> 0.596 %, in the same 114 MB.
-  if (p.focus_edges <= 0) p.focus_edges = focused && n > kManyAntsFrom ? 32 : 16;
+  if (p.focus_edges <= 0) p.focus_edges = 16;
   // 5 alpha-nearest measured better than the 12 nearest (see kAlphaFrom);
   // where the lists are the nearest (beyond kAlphaLimit) they keep their 12.
   if (p.candidates <= 0) p.candidates = uses_alpha_lists(n, p.local_search) ? 5 : ls ? 12 : 20;
@@ -90,6 +80,7 @@ Params resolve(const Params& in, std::size_t n) {
   // kKickAfter). These counts are for 10 ants an iteration (20 above
   // kManyAntsFrom holes); with more ants, fewer iterations, so that a job
   // without a budget does the same ants' work whatever --ants is.
+  const bool focused = p.algorithm == Algorithm::FocusedAcs;
   const double per_ant = focused ? (n > kManyAntsFrom ? 20.0 : 10.0) / p.ants : 1.0;
   if (p.iterations <= 0) {
     const double work = focused ? 2e7 : 2e6;
