@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cmath>
 #include <limits>
 #include <numeric>
 
@@ -38,7 +39,8 @@ namespace {
 //   and an iteration's serial part grows with n (seeds 1-3: brd14051 at 65 s
 //   0.138 0.140 0.166 % with 10, 0.126 0.111 0.116 % with 20, 0.161 0.134
 //   0.162 % with 40; d15112 at 64 s 0.174 0.170 0.176 % with 10, 0.160 0.127
-//   0.176 % with 20).
+//   0.176 % with 20; E100k at 60 s, seed 1, 226.72e6 with 10 and 226.69e6
+//   with 20).
 int focused_ants(std::size_t n) {
   if (n <= detail::kFullListLimit) return 10;
   return n > kManyAntsFrom ? 20 : 40;
@@ -48,6 +50,7 @@ int focused_ants(std::size_t n) {
 
 Params resolve(const Params& in, std::size_t n) {
   Params p = in;
+  const bool focused = p.algorithm == Algorithm::FocusedAcs;
   // (Measured: ACS with local search beats this MMAS at every TSPLIB size we
   // benchmark, so ACS is the default algorithm; see Params.)
   const bool ls = p.local_search != LocalSearch::None;
@@ -66,7 +69,7 @@ Params resolve(const Params& in, std::size_t n) {
     case Algorithm::FocusedAcs:
       if (p.beta < 0) p.beta = 2.0;
       if (p.rho < 0) p.rho = 0.1;
-      if (p.ants <= 0) p.ants = p.algorithm == Algorithm::FocusedAcs ? focused_ants(n) : 10;
+      if (p.ants <= 0) p.ants = focused ? focused_ants(n) : 10;
       break;
   }
   if (p.focus_edges <= 0) p.focus_edges = 16;
@@ -77,18 +80,18 @@ Params resolve(const Params& in, std::size_t n) {
   // thousand holes, fewer beyond (2e6 / n: 20 at 100 000, 3 at a million). A
   // focused iteration of 10 ants costs a small part of a whole-route one, so
   // it gets ten times as many, and a longer patience (kicks come every
-  // kKickAfter). These counts are for 10 ants an iteration (20 above
-  // kManyAntsFrom holes); with more ants, fewer iterations, so that a job
-  // without a budget does the same ants' work whatever --ants is.
-  const bool focused = p.algorithm == Algorithm::FocusedAcs;
-  const double per_ant = focused ? (n > kManyAntsFrom ? 20.0 : 10.0) / p.ants : 1.0;
+  // kKickAfter). These counts are for the ants a focused iteration had
+  // before 7ff92fe (10, 20 above kManyAntsFrom holes); scaled by those over
+  // the ants it has now, a job without a budget does the same ants' work
+  // whatever --ants is.
+  const double iteration_scale = focused ? (n > kManyAntsFrom ? 20.0 : 10.0) / p.ants : 1.0;
   if (p.iterations <= 0) {
     const double work = focused ? 2e7 : 2e6;
     p.iterations = p.time_limit_s > 0
                        ? std::numeric_limits<int>::max()
                        : static_cast<int>(std::ceil(
-                             per_ant * std::clamp<double>(work / std::max<std::size_t>(n, 1), focused ? 20 : 3,
-                                                          focused ? 3000 : 300)));
+                             iteration_scale * std::clamp<double>(work / std::max<std::size_t>(n, 1), focused ? 20 : 3,
+                                                                  focused ? 3000 : 300)));
   }
   // Stop early on stagnation only when the user set no budget of their own:
   // --iterations N means N iterations (the thesis's runs count on it). The
