@@ -366,3 +366,27 @@ TEST(solver_test, focused_colony_improves_on_the_reference_and_stays_a_route) {
   // Every improvement is recorded, and the trace only goes down.
   for (std::size_t i = 1; i < s.trace.size(); ++i) EXPECT_LT(s.trace[i].best_length, s.trace[i - 1].best_length);
 }
+
+// resolve()'s focused defaults: the ants a round by size, and without a
+// budget the iterations scaled so that the ants' work is what it was with
+// 10 ants a round (20 above 10 000 holes); the stall patience stays in rounds.
+TEST(solver_test, focused_defaults_scale_the_rounds_to_the_ants) {
+  aco::Params p;  // focused, no budget
+  const aco::Params small = aco::resolve(p, 500), mid = aco::resolve(p, 3038), large = aco::resolve(p, 15000);
+  EXPECT_EQ(small.ants, 10);
+  EXPECT_EQ(small.iterations, 3000);
+  EXPECT_EQ(mid.ants, 40);
+  EXPECT_EQ(mid.iterations, 750);  // 3000 rounds of 10 ants' work
+  EXPECT_EQ(large.ants, 20);
+  EXPECT_EQ(large.iterations, 1333);  // 2e7 / 15000
+  for (const aco::Params& r : {small, mid, large}) EXPECT_EQ(r.stall_iterations, 600);
+  p.ants = 80;
+  EXPECT_EQ(aco::resolve(p, 3038).iterations, 375);
+  p.ants = 100000;
+  EXPECT_EQ(aco::resolve(p, 100000).iterations, 1);
+  p.ants = 0;
+  p.time_limit_s = 5;
+  const aco::Params budget = aco::resolve(p, 3038);
+  EXPECT_EQ(budget.iterations, std::numeric_limits<int>::max());
+  EXPECT_EQ(budget.stall_iterations, -1);
+}

@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cmath>
 #include <limits>
 #include <numeric>
 
@@ -87,11 +86,9 @@ Params resolve(const Params& in, std::size_t n) {
   const double iteration_scale = focused ? (n > kManyAntsFrom ? 20.0 : 10.0) / p.ants : 1.0;
   if (p.iterations <= 0) {
     const double work = focused ? 2e7 : 2e6;
-    p.iterations = p.time_limit_s > 0
-                       ? std::numeric_limits<int>::max()
-                       : static_cast<int>(std::ceil(
-                             iteration_scale * std::clamp<double>(work / std::max<std::size_t>(n, 1), focused ? 20 : 3,
-                                                                  focused ? 3000 : 300)));
+    const double iterations = std::clamp<double>(work / std::max<std::size_t>(n, 1), focused ? 20 : 3, focused ? 3000 : 300);
+    p.iterations = p.time_limit_s > 0 ? std::numeric_limits<int>::max()
+                                      : std::max(1, static_cast<int>(iteration_scale * iterations));
   }
   // Stop early on stagnation only when the user set no budget of their own:
   // --iterations N means N iterations (the thesis's runs count on it). The
