@@ -150,6 +150,87 @@ app::InputOptions to_input_options(const InputArgs& a) {
   return o;
 }
 
+// The tools on the bench and the side of the board (plan and verify take the same).
+struct BenchArgs {
+  std::string drills;
+  std::optional<double> end_mill;
+  std::string side = "front";
+  std::string mirror_axis;
+  std::optional<double> alignment_pins;
+};
+
+void add_bench_options(CLI::App* cmd, BenchArgs& a) {
+  cmd->add_option("--drills", a.drills,
+                  "The drills you own, mm, comma-separated, each DIA or DIA:-MINUS:+PLUS (how much smaller and larger "
+                  "than a hole it may be; default -0.05 and +0.10: leads need clearance, and larger is the safe side). "
+                  "Each hole goes to a drill that fits it, using the fewest drills that cover every hole, then the "
+                  "closest fit (default: the machine profile's drills_owned, else one drill per diameter)");
+  cmd->add_option("--end-mill", a.end_mill,
+                  "Diameter (mm) of an end mill for the holes no owned drill fits: each is milled by a helix about "
+                  "its centre to its size, as one more tool routed like a drill (default: the profile's end_mill_mm)")
+      ->check(CLI::Range(0.05, 100.0));
+  cmd->add_option("--side", a.side,
+                  "front (default) | back: drill the board from its back, the holes mirrored about the vertical line "
+                  "through the centre of the holes' extent (or --mirror-axis)");
+  cmd->add_option("--mirror-axis", a.mirror_axis,
+                  "x=V (the vertical line X=V) or y=V (the horizontal line Y=V), mm in input coordinates: the line "
+                  "--side back mirrors about and --alignment-pins sit on");
+  cmd->add_option("--alignment-pins", a.alignment_pins,
+                  "Add two pin holes of DIA mm on the mirror line, 10 mm beyond the outermost holes, drilled before "
+                  "everything else, to register the board when it is turned over")
+      ->check(CLI::Range(0.1, 50.0));
+}
+
+planning::MirrorAxis parse_mirror_axis(const BenchArgs& a) {
+  if (a.side != "front" && a.side != "back") throw app::UserError("--side must be front or back (got \"" + a.side + "\")");
+  if (a.mirror_axis.empty()) return {};
+  if (a.side != "back" && !a.alignment_pins) throw app::UserError("--mirror-axis goes with --side back or --alignment-pins");
+  auto axis = planning::mirror_axis_from_string(a.mirror_axis);
+  if (!axis) throw app::UserError("--mirror-axis must be x=V or y=V in mm (got \"" + a.mirror_axis + "\")");
+  return *axis;
+}
+
+// The owned tools: the options, else the machine profile's.
+planning::Tooling tooling_of(const BenchArgs& a, const planning::Machine& machine) {
+  planning::Tooling t;
+  if (!a.drills.empty()) t.drills = planning::parse_owned_drills(a.drills, "--drills");
+  else if (!machine.drills_owned.empty()) t.drills = planning::parse_owned_drills(machine.drills_owned, "drills_owned");
+  t.end_mill_mm = a.end_mill ? a.end_mill : machine.end_mill_mm;
+  return t;
+}
+
+// The board as the program drills it (plan) or should (verify): mirrored
+// for --side back, then program zero, then the alignment pins (not part of
+// the extent that places zero) at the end, in program coordinates. Returns
+// the pins' indices.
+std::vector<aco::HoleIndex> turn_and_place(aco::HoleSet& holes, const BenchArgs& a, const planning::Origin* origin,
+                                           planning::Placement* placement, std::vector<std::string>* notes) {
+  const planning::MirrorAxis axis = planning::resolve_mirror_axis(holes, parse_mirror_axis(a));
+  const std::string line = std::string(axis.vertical ? "X=" : "Y=") + gcode::format_number(*axis.at, 3);
+  if (a.side == "back") {
+    planning::mirror_holes(holes, axis);
+    if (notes) notes->push_back("SIDE: BACK, HOLES MIRRORED ABOUT " + line + " (DRAWING MM)");
+  }
+  aco::HoleSet pins = a.alignment_pins ? planning::alignment_pins(holes, axis, *a.alignment_pins) : aco::HoleSet{};
+  aco::Point2 zero{0, 0};
+  if (origin) {
+    *placement = planning::place_holes(holes, *origin);
+    zero = placement->zero;
+  }
+  std::vector<aco::HoleIndex> first;
+  for (aco::Hole& pin : pins) {
+    pin.center = {pin.center.x - zero.x, pin.center.y - zero.y};
+    first.push_back(static_cast<aco::HoleIndex>(holes.size()));
+    holes.push_back(pin);
+  }
+  if (notes && !pins.empty()) {
+    notes->push_back("ALIGNMENT PINS: D" + gcode::format_number(*a.alignment_pins, 3) + " ON " + line + " AT X" +
+                     gcode::format_number(pins[0].center.x, 3) + " Y" + gcode::format_number(pins[0].center.y, 3) + " AND X" +
+                     gcode::format_number(pins[1].center.x, 3) + " Y" + gcode::format_number(pins[1].center.y, 3) + ", DRILLED FIRST");
+  }
+  return first;
+}
+
 // `skipped_label` says what became of what the input holds but the holes leave out.
 // `holes`: how many holes to say the input gave (default: those it holds; a
 // file of a several-file job has handed its holes to the job).
@@ -261,7 +342,19 @@ struct PlanArgs {
   std::size_t resume_from = 1;
   int program_number = 1001;
   bool quiet = false;
+  BenchArgs bench;
+  std::optional<double> probe_plate;
 };
+
+// "D0.750 MM, 12 HOLES: T2 0.800 MM DRILL, +0.050 MM": how a designed diameter is made.
+std::string drill_map_line(const planning::DrillMapping& d) {
+  std::string line = "D" + gcode::format_number(d.designed_mm, 3) + " MM, " + std::to_string(d.holes) +
+                     (d.holes == 1 ? " HOLE: T" : " HOLES: T") + std::to_string(d.tool) + " ";
+  if (d.milled) return line + gcode::format_number(d.tool_mm, 3) + " MM END MILL, MILLED TO SIZE";
+  const double over = d.tool_mm - d.designed_mm;
+  return line + gcode::format_number(d.tool_mm, 3) + " MM DRILL, " +
+         (std::fabs(over) < 0.0005 ? std::string("EXACT") : (over > 0 ? "+" : "") + gcode::format_number(over, 3) + " MM");
+}
 
 // Writes the program and every asked-for output (each complete or not at
 // all), then the summary on stderr.
@@ -311,6 +404,14 @@ int finish_plan(const PlanArgs& a, const std::string& program_text, const aco::H
     std::fprintf(stderr, "acodrill: %zu holes, %zu tool%s, %d iterations in %.2f s on %d thread%s\n",
                  holes.size(), n_tools, n_tools == 1 ? "" : "s", plan.iterations, plan.solver_wall_s,
                  plan.solver.threads, plan.solver.threads == 1 ? "" : "s");
+    if (!plan.drill_map.empty()) {
+      std::fprintf(stderr, "  the tools you own:\n");
+      for (const planning::DrillMapping& d : plan.drill_map) {
+        std::string l = drill_map_line(d);
+        for (char& c : l) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        std::fprintf(stderr, "    %s\n", l.c_str());
+      }
+    }
     std::fprintf(stderr, "  %-18s %12s %12s\n", "order", "travel mm", "time min");
     std::fprintf(stderr, "  %-18s %12.1f %12.2f\n", ctx.program_input ? "input program" : "input order", in.travel_mm,
                  in.time_s / 60);
@@ -367,7 +468,9 @@ int plan_program(const PlanArgs& a, planning::PlanOptions o, const app::LoadedHo
   }
   for (const auto& [given, name] : {std::pair{!a.tools.empty(), "--tools"}, {a.resume_from != 1, "--resume-from"},
                                     {!a.material.empty(), "--material"}, {a.thickness.has_value(), "--thickness"},
-                                    {a.default_diameter.has_value(), "--default-diameter"}, {!a.panel.empty(), "--panel"}}) {
+                                    {a.default_diameter.has_value(), "--default-diameter"}, {!a.panel.empty(), "--panel"},
+                                    {!a.bench.drills.empty(), "--drills"}, {a.bench.end_mill.has_value(), "--end-mill"},
+                                    {a.bench.side != "front", "--side"}, {a.bench.alignment_pins.has_value(), "--alignment-pins"}}) {
     if (given) throw app::UserError(std::string(name) + " does not apply to a program: its tools, cycles and depths are kept");
   }
   if (input.hole_count() == 0) {
@@ -470,6 +573,20 @@ int cmd_plan(const PlanArgs& a, const SolverArgs& s, const InputArgs& in_args) {
   else if (a.objective == "time") o.objective = planning::Objective::Time;
   else throw app::UserError("--objective must be distance or time (got \"" + a.objective + "\")");
   if (!a.tools.empty()) o.tools = planning::parse_tool_table(app::read_file(a.tools), a.tools);
+  // The tools on the bench; a tool table names its own instead.
+  if (!a.tools.empty() && (!a.bench.drills.empty() || a.bench.end_mill)) {
+    throw app::UserError("--drills and --end-mill plan the tools you own; a --tools table names its own: drop one of them");
+  }
+  if (a.tools.empty()) o.tooling = tooling_of(a.bench, o.machine);
+  parse_mirror_axis(a.bench);
+  o.program.probe_plate_mm = a.probe_plate ? a.probe_plate : o.machine.probe_plate_mm;
+  o.program.probe_feed_mm_min = o.machine.probe_feed_mm_min;
+  o.program.probe_travel_mm = o.machine.probe_travel_mm;
+  if (o.program.probe_plate_mm && (o.program.dialect == gcode::Dialect::Haas || o.program.dialect == gcode::Dialect::Fanuc)) {
+    throw app::UserError(std::string("--probe-plate: a ") + (o.program.dialect == gcode::Dialect::Haas ? "HAAS" : "Fanuc") +
+                         " measures its tools with its own probing cycles and length offsets; touch-plate probing is "
+                         "written for --dialect grbl, marlin or linuxcnc");
+  }
 
   app::Job job = app::load_job(a.inputs, to_input_options(in_args));
   o.solver.time_limit_s = app::time_left(o.solver.time_limit_s, seconds_since_start());
@@ -516,7 +633,10 @@ int cmd_plan(const PlanArgs& a, const SolverArgs& s, const InputArgs& in_args) {
   }
   // Program zero where the machinist will set the work offset.
   if (a.default_diameter) planning::fill_missing_diameters(loaded.holes, *a.default_diameter);
-  const planning::Placement placement = planning::place_holes(loaded.holes, origin);
+  planning::Placement placement;
+  std::vector<std::string> side_notes;
+  o.first_holes = turn_and_place(loaded.holes, a.bench, &origin, &placement, &side_notes);
+  if (!o.hole_source.empty()) o.hole_source.resize(loaded.holes.size(), 0);
   planning::PlanResult plan = planning::plan_job(loaded.holes, o, source);
   if (progress) std::fprintf(stderr, "\r%60s\r", "");
 
@@ -535,6 +655,9 @@ int cmd_plan(const PlanArgs& a, const SolverArgs& s, const InputArgs& in_args) {
           std::to_string(plan.solver.seed),
       planning::origin_comment(placement, ps.units),
       planning::zero_comment(placement)};
+  ps.header_comments.insert(ps.header_comments.end(), side_notes.begin(), side_notes.end());
+  // Which drill makes which designed diameter, and by how much it differs.
+  for (const planning::DrillMapping& d : plan.drill_map) ps.header_comments.push_back(drill_map_line(d));
   if (copies > 1) {
     ps.header_comments.push_back("PANEL: " + std::to_string(copies) + " COPIES OF " + std::to_string(loaded.holes.size() / copies) +
                                  " HOLES, EACH TOOL ACROSS THE WHOLE PANEL");
@@ -602,7 +725,11 @@ int cmd_tsp(const std::string& input, const std::string& tour, const SolverArgs&
 }
 
 int cmd_verify(const std::string& program_path, const std::vector<std::string>& holes_paths, const std::string& origin_text,
-               const std::string& panel, const std::string& pitch, const InputArgs& in_args, bool quiet) {
+               const std::string& panel, const std::string& pitch, const InputArgs& in_args, const BenchArgs& bench, bool quiet) {
+  planning::Tooling tooling;
+  if (!bench.drills.empty()) tooling.drills = planning::parse_owned_drills(bench.drills, "--drills");
+  tooling.end_mill_mm = bench.end_mill;
+  parse_mirror_axis(bench);
   const std::string text = app::read_file(program_path);
   gcode::Interpretation run;
   try {
@@ -643,12 +770,18 @@ int cmd_verify(const std::string& program_path, const std::vector<std::string>& 
   // The holes as the program should drill them: moved to the program zero
   // --origin names, else the one the program states (acodrill writes it in its
   // header), else where they are (another CAM's program).
+  // Turned over and pinned as plan was told (--side, --alignment-pins).
+  planning::Placement placement;
   if (!origin_text.empty()) {
-    planning::place_holes(expected.holes, parse_origin(origin_text));
+    const planning::Origin origin = parse_origin(origin_text);
+    turn_and_place(expected.holes, bench, &origin, &placement, nullptr);
   } else if (auto zero = planning::stated_zero(text)) {
-    planning::place_holes(expected.holes, planning::Origin{planning::OriginKind::Point, *zero});
+    const planning::Origin origin{planning::OriginKind::Point, *zero};
+    turn_and_place(expected.holes, bench, &origin, &placement, nullptr);
+  } else {
+    turn_and_place(expected.holes, bench, nullptr, nullptr, nullptr);
   }
-  const std::vector<std::string> faults = app::check_drilled(run, expected.holes);
+  const std::vector<std::string> faults = app::check_drilled(run, expected.holes, tooling);
   if (faults.empty()) {
     std::printf("ok: %zu input holes drilled once each with the right tool\n", expected.holes.size());
     return 0;
@@ -773,6 +906,12 @@ int main(int argc, char** argv) {
   plan_cmd->add_flag("--keep-files-apart", plan.keep_files_apart,
                      "Several inputs: each file's holes get tools of their own, drilled file after file (plated and "
                      "non-plated holes at different steps of the process)");
+  plan_cmd->add_option("--probe-plate", plan.probe_plate,
+                       "Thickness (mm) of a touch plate: after each tool change GRBL, Marlin and LinuxCNC programs probe Z "
+                       "on it (G38.2), set Z to its thickness and pause to take the clip off (default: the profile's "
+                       "probe_plate_mm; refused for HAAS and Fanuc)")
+      ->check(CLI::Range(0.01, 50.0));
+  add_bench_options(plan_cmd, plan.bench);
   plan_cmd->add_flag("-q,--quiet", plan.quiet, "Print nothing on success");
   add_solver_options(plan_cmd, solver);
   add_input_options(plan_cmd, in_args);
@@ -814,6 +953,8 @@ int main(int argc, char** argv) {
   verify_cmd->add_option("--panel", verify_panel, "The panel plan was given (COLSxROWS with --pitch, or a panel file)");
   verify_cmd->add_option("--pitch", verify_pitch, "DX,DY in mm, with --panel COLSxROWS");
   verify_cmd->add_flag("-q,--quiet", quiet, "No summary on stderr");
+  BenchArgs verify_bench;
+  add_bench_options(verify_cmd, verify_bench);
   add_input_options(verify_cmd, verify_in);
 
   std::string machines_show;
@@ -855,7 +996,7 @@ int main(int argc, char** argv) {
     }
     if (*holes_cmd) return cmd_holes(holes_input, holes_in, holes_format, quiet);
     if (*tsp_cmd) return cmd_tsp(tsp_input, tsp_tour, tsp_solver, quiet);
-    if (*verify_cmd) return cmd_verify(verify_program, read_once(verify_holes, quiet), verify_origin, verify_panel, verify_pitch, verify_in, quiet);
+    if (*verify_cmd) return cmd_verify(verify_program, read_once(verify_holes, quiet), verify_origin, verify_panel, verify_pitch, verify_in, verify_bench, quiet);
     if (*machines_cmd) return cmd_machines(machines_show);
   } catch (const app::UserError& e) {
     std::cerr << "acodrill: error: " << e.where_what() << "\n";

@@ -23,7 +23,8 @@ std::string report_json(const aco::HoleSet& holes, const PlanResult& plan, const
     t["tool"] = g.tool.number;
     t["diameter_mm"] = round6(g.tool.diameter_mm);
     t["holes"] = g.optimized.size();
-    t["cycle"] = gcode::to_string(g.tool.cycle);
+    t["cycle"] = g.tool.end_mill ? "helix" : gcode::to_string(g.tool.cycle);
+    t["kind"] = g.tool.end_mill ? "end_mill" : "drill";
     t["spindle_rpm"] = g.tool.spindle_rpm;
     t["feed_mm_min"] = round6(g.tool.feed_mm_min);
     t["depth_mm"] = round6(g.tool.depth_mm);
@@ -39,6 +40,18 @@ std::string report_json(const aco::HoleSet& holes, const PlanResult& plan, const
                            {"diameter_mm", round6(g.tool.diameter_mm)},
                            {"hits", g.optimized.size()},
                            {"max_hits", g.tool.max_hits}});
+  }
+  // The tools the user owns: what each designed diameter is made with, and by how much it differs.
+  if (!plan.drill_map.empty()) {
+    j["drill_map"] = nlohmann::ordered_json::array();
+    for (const DrillMapping& d : plan.drill_map) {
+      j["drill_map"].push_back({{"designed_mm", round6(d.designed_mm)},
+                                {"holes", d.holes},
+                                {"tool", d.tool},
+                                {"tool_diameter_mm", round6(d.tool_mm)},
+                                {"made_as", d.milled ? "milled" : "drilled"},
+                                {"oversize_mm", d.milled ? 0.0 : round6(d.tool_mm - d.designed_mm)}});
+    }
   }
   j["travel_mm"] = {{"input_order", round6(plan.input_order.travel_mm)},
                     {"nearest_neighbor", round6(plan.nearest_neighbor.travel_mm)},

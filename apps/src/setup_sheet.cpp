@@ -96,7 +96,8 @@ std::string setup_sheet_html(const aco::HoleSet& holes, const PlanResult& plan, 
     const bool pecks = t.cycle == gcode::Cycle::G83 || t.cycle == gcode::Cycle::G73;
     const double tool_time = g < plan.optimized.tool_time_s.size() ? plan.optimized.tool_time_s[g] : 0.0;
     h << "<tr><td>T" << t.number << "</td><td>" << esc(gcode::tool_name(t)) << "</td><td class=\"n\">" << len(t.diameter_mm)
-      << "</td><td>" << gcode::to_string(t.cycle) << "</td><td class=\"n\">" << len(t.depth_mm) << "</td><td class=\"n\">"
+      << "</td><td>" << (t.end_mill ? "helix, " + len(t.helix_pitch_mm) + " a turn" : std::string(gcode::to_string(t.cycle)))
+      << "</td><td class=\"n\">" << len(t.depth_mm) << "</td><td class=\"n\">"
       << (pecks ? len(t.peck_mm) : std::string("&#8211;")) << "</td><td class=\"n\">"
       << (t.cycle == gcode::Cycle::G82 ? gcode::format_number(t.dwell_s, 2) : std::string("&#8211;"))
       << "</td><td class=\"n\">" << feed(t.feed_mm_min) << "</td><td class=\"n\">" << t.spindle_rpm << "</td><td class=\"n\">"
@@ -105,6 +106,19 @@ std::string setup_sheet_html(const aco::HoleSet& holes, const PlanResult& plan, 
       << "</td></tr>\n";
   }
   h << "</table>\n";
+  // The tools the user owns: which drill makes which designed diameter.
+  if (!plan.drill_map.empty()) {
+    h << "<h2>Designed holes and the tools that make them</h2>\n<table class=\"tools\">\n<tr><th class=\"n\">Designed "
+      << unit << "</th><th class=\"n\">Holes</th><th>Made with</th><th class=\"n\">Over (+) / under (&#8722;) " << unit
+      << "</th></tr>\n";
+    for (const DrillMapping& d : plan.drill_map) {
+      h << "<tr><td class=\"n\">" << len(d.designed_mm) << "</td><td class=\"n\">" << d.holes << "</td><td>T" << d.tool << " "
+        << len(d.tool_mm) << " " << unit << (d.milled ? " end mill, milled to size" : " drill") << "</td><td class=\"n\">"
+        << (d.milled ? std::string("&#8211;") : (d.tool_mm > d.designed_mm + 1e-9 ? "+" : "") + len(d.tool_mm - d.designed_mm))
+        << "</td></tr>\n";
+    }
+    h << "</table>\n";
+  }
 
   const RouteStats& in = plan.input_order;
   const RouteStats& nn = plan.nearest_neighbor;

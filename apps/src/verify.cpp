@@ -9,7 +9,26 @@
 
 namespace app {
 
-std::vector<std::string> check_drilled(const gcode::Interpretation& run, const aco::HoleSet& expected) {
+namespace {
+
+// Whether a tool of `tool_mm` (milling a helix of path radius `milled_r`, or 0) makes a hole of `hole_mm`.
+bool makes(double tool_mm, double milled_r, double hole_mm, const planning::Tooling& tooling) {
+  constexpr double kSame = 0.0015;  // a diameter printed with 3 decimals
+  const bool end_mill = tooling.end_mill_mm && std::fabs(tool_mm - *tooling.end_mill_mm) <= kSame;
+  if (milled_r > 0) {
+    return (!tooling.end_mill_mm || end_mill) && std::fabs(2.0 * milled_r + tool_mm - hole_mm) <= kMilledToleranceMm;
+  }
+  if (end_mill && std::fabs(tool_mm - hole_mm) <= kMilledToleranceMm) return true;  // plunged: the end mill's size
+  if (tooling.drills.empty()) return std::fabs(tool_mm - hole_mm) <= kSame;
+  return std::any_of(tooling.drills.begin(), tooling.drills.end(), [&](const planning::OwnedDrill& o) {
+    return std::fabs(o.diameter_mm - tool_mm) <= kSame && o.fits(hole_mm);
+  });
+}
+
+}  // namespace
+
+std::vector<std::string> check_drilled(const gcode::Interpretation& run, const aco::HoleSet& expected,
+                                       const planning::Tooling& tooling) {
   // Each input hole must be drilled exactly once, at its place (within the
   // program's printed precision), by a tool of its diameter.
   const double tol = run.inch ? 0.00006 * 25.4 + 1e-6 : 0.0006 + 1e-6;
@@ -42,13 +61,16 @@ std::vector<std::string> check_drilled(const gcode::Interpretation& run, const a
     std::vector<std::size_t> same_tool;
     for (std::size_t m : matches) {
       auto known = run.tool_diameter_mm.find(run.holes[m].tool);
-      if (known == run.tool_diameter_mm.end() || h.diameter <= 0 || std::fabs(known->second - h.diameter) <= 0.0015) {
+      if (known == run.tool_diameter_mm.end() || h.diameter <= 0 ||
+          makes(known->second, run.holes[m].milled_radius_mm, h.diameter, tooling)) {
         same_tool.push_back(m);
       }
     }
     if (same_tool.empty()) {
       const auto& d = run.holes[matches.front()];
-      faults.push_back("hole " + at + " D" + gcode::format_number(h.diameter, 3) + " is drilled with T" +
+      faults.push_back("hole " + at + " D" + gcode::format_number(h.diameter, 3) + " is " +
+                       (d.milled_radius_mm > 0 ? "milled to D" + gcode::format_number(2 * d.milled_radius_mm + run.tool_diameter_mm.at(d.tool), 3) + " with T"
+                                               : std::string("drilled with T")) +
                        std::to_string(d.tool) + " D" + gcode::format_number(run.tool_diameter_mm.at(d.tool), 3) +
                        " (line " + std::to_string(d.line) + ")");
       for (std::size_t m : matches) used[m] = 1;

@@ -145,7 +145,7 @@ int decimals_of(const std::string& number) {
   return dot == std::string::npos ? 0 : static_cast<int>(number.size() - dot - 1);
 }
 
-enum class Motion { Rapid, Feed, Cycle };
+enum class Motion { Rapid, Feed, Arc, Cycle };
 
 // The hole being made by expanded drilling: open from the first feed down at
 // an XY until the spindle leaves that XY.
@@ -302,7 +302,7 @@ class Reader {
   double scale() const { return inch_ ? 25.4 : 1.0; }
 
   void block(const std::vector<Word>& words) {
-    std::optional<double> wx, wy, wz, wr, wq;
+    std::optional<double> wx, wy, wz, wr, wq, wi, wj;
     std::optional<std::string> wp;
     std::string extra;
     std::optional<Motion> motion;
@@ -319,7 +319,7 @@ class Reader {
           switch (code) {
             case 0: motion = Motion::Rapid; break;
             case 10: motion = Motion::Feed; break;
-            case 20: case 30: if (options_.drilling_only) refuse("an arc (G" + w.text + ")"); motion = Motion::Feed; break;
+            case 20: case 30: if (options_.drilling_only) refuse("an arc (G" + w.text + ")"); motion = Motion::Arc; break;
             case 40: dwell = true; break;
             case 730: case 740: case 810: case 820: case 830: case 840: case 850: case 860: case 870: case 880: case 890:
               motion = Motion::Cycle;
@@ -389,7 +389,11 @@ class Reader {
           selected_tool_ = t;
           break;
         }
-        case 'I': case 'J': case 'K': case 'E': extra += (extra.empty() ? "" : " ") + std::string(1, w.letter) + w.text; break;
+        case 'I': case 'J': case 'K': case 'E':
+          if (w.letter == 'I') wi = w.value * scale();
+          if (w.letter == 'J') wj = w.value * scale();
+          extra += (extra.empty() ? "" : " ") + std::string(1, w.letter) + w.text;
+          break;
         case 'L':
           if (options_.drilling_only && std::lround(w.value) != 1) refuse("L repeats a cycle; write each hole");
           break;
@@ -452,6 +456,8 @@ class Reader {
     const aco::Point2 to{wx ? (absolute_ ? *wx : xy_.x + *wx) : xy_.x, wy ? (absolute_ ? *wy : xy_.y + *wy) : xy_.y};
     if (motion_ == Motion::Cycle) {
       cycle_block(wx || wy || wz || motion.has_value(), to, wz, wr, wq, wp, extra);
+    } else if (motion_ == Motion::Arc) {
+      arc(to, wz, {wi.value_or(0.0), wj.value_or(0.0)});
     } else {
       wx_given_ = wx.has_value();
       wy_given_ = wy.has_value();
@@ -599,6 +605,41 @@ class Reader {
     }
     hole_move(m);
     if (*nz >= hole_.feed_start_z - kTiny) hole_.out = true;  // out of the hole: the rest is travel
+  }
+
+  // An arc (lenient reading only: a drilling program refuses them). Arcs
+  // that go on from a feed down where a hole was opened, all about one
+  // centre, mill that hole: it is made about the arc's centre, to the depth
+  // the helix reaches, `milled_radius_mm` from it. Any other arc is read past.
+  void arc(aco::Point2 to, std::optional<double> wz, aco::Point2 ij) {
+    std::optional<double> nz;
+    if (wz) nz = absolute_ ? *wz : z_.value_or(0.0) + *wz;
+    const aco::Point2 centre{xy_.x + ij.x, xy_.y + ij.y};
+    const double radius = std::hypot(ij.x, ij.y);
+    bool helix = false;
+    if (hole_.open && !hole_.out && radius > kTiny) {
+      ProgramHole& h = out_.runs[hole_.run].holes[hole_.index];
+      if (!h.milled_radius_mm) {
+        h.milled_radius_mm = radius;
+        h.at = centre;
+        helix = true;
+      } else {
+        helix = aco::euclidean(h.at, centre) <= 1e-3 && std::fabs(*h.milled_radius_mm - radius) <= 1e-3;
+      }
+    }
+    if (!helix) {
+      close_hole();
+      xy_ = to;
+      arrive_z_ = nz ? nz : z_;
+      approach_.clear();
+      if (nz) z_ = nz;
+      return;
+    }
+    xy_ = to;
+    if (nz) {
+      hole_move({ZMove::Feed, *nz, feed_, "", 0.0});
+      z_ = nz;
+    }
   }
 
   void cycle_block(bool drills, aco::Point2 to, std::optional<double> wz, std::optional<double> wr,

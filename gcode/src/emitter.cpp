@@ -3,6 +3,7 @@
 // comments, safe-start line, units, then per tool: T M06, spindle on at the
 // first hole, G43 H Z with coolant, the full cycle on the first hole, bare X Y
 // after, G80 M09 M05, Z home, M01; at the end Z home before XY, M30, %.
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -11,6 +12,7 @@
 #include "gcode/drilling.h"
 #include "gcode/program.h"
 #include "hobby_writer.h"
+#include "milling.h"
 
 namespace gcode {
 
@@ -49,6 +51,43 @@ class Writer {
     return " (H" + std::to_string(index) + ")";
   }
 
+  // The milling moves of one hole (milling.h), the spindle over its start.
+  void milled_hole(aco::Point2 start, const std::vector<PathMove>& moves) {
+    const double sx = rounded(to_units(start.x), coord_decimals()), sy = rounded(to_units(start.y), coord_decimals());
+    for (const PathMove& m : moves) {
+      if (m.kind == PathMove::Rapid) {
+        line("G00 Z" + c(*m.z));
+        continue;
+      }
+      std::string text = m.kind == PathMove::ArcCw ? "G02" : "G01";
+      if (m.x) text += " X" + c(*m.x);
+      if (m.y) text += " Y" + c(*m.y);
+      if (m.kind == PathMove::ArcCw) {
+        // I J from the start as printed: the arc's centre is the hole's to the last digit.
+        const double cx = rounded(to_units(m.centre.x), coord_decimals()), cy = rounded(to_units(m.centre.y), coord_decimals());
+        text += " I" + format_number(cx - sx, coord_decimals()) + " J" + format_number(cy - sy, coord_decimals());
+      }
+      if (m.z) text += " Z" + c(*m.z);
+      line(text + " F" + f(m.feed_mm_min));
+    }
+  }
+
+  // After a manual tool change, Z probed on a touch plate on the part
+  // (LinuxCNC): a pause to put it under the tool and clip on, down at most
+  // the probe's travel until it touches, that point set as Z plate (G10 L20
+  // P0: the active work offset), up 5 mm over the plate, a pause to take the
+  // clip off.
+  void probe_plate(const Tool& t, double plate_mm) {
+    line("(MSG, TOUCH PLATE ON THE PART UNDER T" + std::to_string(t.number) + ", CLIP ON, RESUME)");
+    line("M00");
+    line("G91 G38.2 Z-" + c(s_.probe_travel_mm) + " F" + f(s_.probe_feed_mm_min));
+    line("G90");
+    line("G10 L20 P0 Z" + c(plate_mm));
+    line("G00 Z" + c(plate_mm + 5.0));
+    line("(MSG, TAKE THE PROBE CLIP AND THE TOUCH PLATE AWAY, RESUME)");
+    line("M00");
+  }
+
  private:
   std::ostream& out_;
   const ProgramSettings& s_;
@@ -75,7 +114,7 @@ std::string z_home_block(Dialect d) {
 
 std::string tool_name(const Tool& t) {
   if (!t.name.empty()) return t.name;
-  return format_number(t.diameter_mm, 3) + " MM DRILL";
+  return format_number(t.diameter_mm, 3) + (t.end_mill ? " MM END MILL" : " MM DRILL");
 }
 
 const char* to_string(Dialect d) {
@@ -149,7 +188,11 @@ void write_hobby_program(std::ostream& out, const std::vector<ToolPass>& passes,
   w.header(s.program_name, s.header_comments);
   if (s.resume_from > 1) w.comment("RESUMED AT HOLE " + std::to_string(s.resume_from));
   for (const ToolPass& p : passes) w.tool_line(p.tool.number, p.tool.diameter_mm, tool_name(p.tool), p.holes.size());
-  w.comment("EACH TOOL: A PAUSE TO PUT IN ITS DRILL AND ZERO Z ON THE PART TOP");
+  const bool milled = std::any_of(passes.begin(), passes.end(), [](const ToolPass& p) { return p.tool.end_mill; });
+  if (milled && s.dialect == Dialect::Marlin) w.comment("MILLED HOLES ARE G2 ARCS: MARLIN NEEDS ARC_SUPPORT");
+  if (s.probe_plate_mm && s.dialect == Dialect::Marlin) w.comment("TOUCH PLATE PROBING IS G38.2: MARLIN NEEDS G38_PROBE_TARGET");
+  w.comment(s.probe_plate_mm ? "EACH TOOL: A PAUSE TO PUT IT IN, Z PROBED ON THE TOUCH PLATE, A PAUSE TO TAKE THE CLIP OFF"
+                             : "EACH TOOL: A PAUSE TO PUT IN ITS DRILL AND ZERO Z ON THE PART TOP");
   w.start();
   w.rapid_z(s.initial_z_mm);
   for (const ToolPass& p : passes) {
@@ -158,10 +201,28 @@ void write_hobby_program(std::ostream& out, const std::vector<ToolPass>& passes,
     if (first == p.holes.size()) continue;
     const Tool& t = p.tool;
     w.comment("T" + std::to_string(t.number) + " " + tool_name(t) + ", " + std::to_string(p.holes.size() - first) + " HOLES");
-    w.pause_for("PUT IN T" + std::to_string(t.number) + " " + tool_name(t) + ", ZERO Z ON THE PART TOP, RESUME",
-                s.initial_z_mm);
-    w.select_tool(t.number);
+    const std::string put_in = "PUT IN T" + std::to_string(t.number) + " " + tool_name(t);
+    if (s.probe_plate_mm) {
+      w.pause_for(put_in + ", TOUCH PLATE ON THE PART UNDER IT, CLIP ON, RESUME", s.initial_z_mm);
+      w.select_tool(t.number);
+      w.probe_plate(*s.probe_plate_mm, s.probe_feed_mm_min, s.probe_travel_mm);
+    } else {
+      w.pause_for(put_in + ", ZERO Z ON THE PART TOP, RESUME", s.initial_z_mm);
+      w.select_tool(t.number);
+    }
     w.spindle_on(3, t.spindle_rpm, s.spindle_start_s);
+    if (t.end_mill) {
+      for (std::size_t i = first; i < p.holes.size(); ++i) {
+        const bool last = i + 1 == p.holes.size();
+        const bool clear = i < p.clear_after.size() && p.clear_after[i];
+        const double retract = !s.retract_to_r || last || clear ? s.initial_z_mm : s.r_plane_mm;
+        const double d = i < p.mill_diameter.size() ? p.mill_diameter[i] : t.diameter_mm;
+        w.comment("HOLE " + std::to_string(p.index[i]) + " MILLED D" + format_number(d, 3));
+        w.milled_hole(milled_hole_start(p.holes[i], d, t), milled_hole_moves(p.holes[i], d, t, s.r_plane_mm, retract),
+                      s.r_plane_mm);
+      }
+      continue;
+    }
     // As G99/G98: back to R between holes, to the initial plane after a
     // tool's last hole and before a move over a clamp. Every hole of the
     // tool is one of these two.
@@ -186,6 +247,11 @@ void write_program(std::ostream& out, const std::vector<ToolPass>& passes, const
     throw std::invalid_argument("program number must be 1..99999");
   }
   if (!(s.r_plane_mm < s.initial_z_mm)) throw std::invalid_argument("the R plane must lie below the initial Z");
+  if (s.probe_plate_mm && (s.dialect == Dialect::Haas || s.dialect == Dialect::Fanuc)) {
+    throw std::invalid_argument(std::string("--probe-plate: a ") + (s.dialect == Dialect::Haas ? "HAAS" : "Fanuc") +
+                                " control measures its tools with its own probing cycles and length offsets; touch-plate "
+                                "probing is written for --dialect grbl, marlin or linuxcnc");
+  }
   std::size_t total = 0;
   for (const ToolPass& p : passes) total += p.holes.size();
   if (s.resume_from < 1 || (total > 0 && s.resume_from > total)) {
@@ -223,13 +289,28 @@ void write_program(std::ostream& out, const std::vector<ToolPass>& passes, const
     w.line("(T" + std::to_string(t.number) + " " + comment_text(tool_name(t)) + ", " + std::to_string(count) +
            " HOLES)");
     w.line("T" + std::to_string(t.number) + " M06 (" + comment_text(tool_name(t)) + ")");
-    const aco::Point2& h0 = p.holes[first];
+    if (s.probe_plate_mm) w.probe_plate(t, *s.probe_plate_mm);
+    const aco::Point2 h0 = t.end_mill ? milled_hole_start(p.holes[first], p.mill_diameter.at(first), t) : p.holes[first];
     w.line("G00 G90 G54 X" + w.c(h0.x) + " Y" + w.c(h0.y) + " S" + std::to_string(t.spindle_rpm) + " M03");
     char hbuf[16];
     std::snprintf(hbuf, sizeof hbuf, "H%02d", t.number);
-    w.line("G43 " + std::string(hbuf) + " Z" + w.c(s.initial_z_mm) + " M08");
+    // Probed on the plate, the work offset already holds this tool's length.
+    if (s.probe_plate_mm) w.line("G00 Z" + w.c(s.initial_z_mm) + " M08");
+    else w.line("G43 " + std::string(hbuf) + " Z" + w.c(s.initial_z_mm) + " M08");
+    if (t.end_mill) {
+      for (std::size_t i = first; i < p.holes.size(); ++i) {
+        const bool last = i + 1 == p.holes.size();
+        const bool clear = i < p.clear_after.size() && p.clear_after[i];
+        const double retract = !s.retract_to_r || last || clear ? s.initial_z_mm : s.r_plane_mm;
+        const double d = p.mill_diameter.at(i);
+        const aco::Point2 start = milled_hole_start(p.holes[i], d, t);
+        w.line(w.label(p.index[i]) + "G00 X" + w.c(start.x) + " Y" + w.c(start.y) + w.trailing_label(p.index[i]) +
+               " (MILLED D" + w.c(d) + ")");
+        w.milled_hole(start, milled_hole_moves(p.holes[i], d, t, s.r_plane_mm, retract));
+      }
+    }
     bool mode_initial = false;
-    for (std::size_t i = first; i < p.holes.size(); ++i) {
+    for (std::size_t i = t.end_mill ? p.holes.size() : first; i < p.holes.size(); ++i) {
       const aco::Point2& h = p.holes[i];
       const bool last = i + 1 == p.holes.size();
       // G99 (back to R) between holes saves time; G98 (back to the initial

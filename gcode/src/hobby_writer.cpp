@@ -71,6 +71,10 @@ void HobbyWriter::pause_for(const std::string& message, double clear_z_mm) {
   spindle_off();
   coolant_off();
   rapid_z(clear_z_mm);
+  message_pause(message);
+}
+
+void HobbyWriter::message_pause(const std::string& message) {
   const std::string t = plain(message);
   if (dialect_ == Dialect::Marlin) {
     line(("M0 " + t).substr(0, kMaxLine));
@@ -151,6 +155,48 @@ void HobbyWriter::hole(aco::Point2 at, const std::vector<ZMove>& moves, double t
       case ZMove::Dwell: dwell(m.dwell_s); break;
     }
   }
+}
+
+void HobbyWriter::milled_hole(aco::Point2 start, const std::vector<PathMove>& moves, double travel_z_mm) {
+  hole(start, {}, travel_z_mm);
+  const double sx = rounded(inch_ ? start.x / kMmPerInch : start.x, decimals_);
+  const double sy = rounded(inch_ ? start.y / kMmPerInch : start.y, decimals_);
+  for (const PathMove& m : moves) {
+    if (m.kind == PathMove::Rapid) {
+      rapid_z(*m.z);
+      continue;
+    }
+    std::string text = m.kind == PathMove::ArcCw ? "G2" : "G1";
+    if (m.x) text += " X" + n(*m.x);
+    if (m.y) text += " Y" + n(*m.y);
+    if (m.kind == PathMove::ArcCw) {
+      // I J from the start as printed: the arc's centre is the hole's to the last digit.
+      const double cx = rounded(inch_ ? m.centre.x / kMmPerInch : m.centre.x, decimals_);
+      const double cy = rounded(inch_ ? m.centre.y / kMmPerInch : m.centre.y, decimals_);
+      text += " I" + format_number(cx - sx, decimals_) + " J" + format_number(cy - sy, decimals_);
+    }
+    if (m.z) {
+      text += " Z" + n(*m.z);
+      z_ = *m.z;
+    }
+    if (!feed_ || std::fabs(*feed_ - m.feed_mm_min) > 1e-9) text += " F" + f(m.feed_mm_min);
+    feed_ = m.feed_mm_min;
+    line(text);
+  }
+}
+
+void HobbyWriter::probe_plate(double plate_mm, double feed_mm_min, double travel_mm) {
+  spindle_off();
+  line("G91 G38.2 Z-" + n(travel_mm) + " F" + f(feed_mm_min));
+  line("G90");
+  feed_ = feed_mm_min;
+  // GRBL: G10 L20 P0 sets the active work offset so that here is Z plate;
+  // Marlin has no G10 L20 and sets the position with G92.
+  if (dialect_ == Dialect::Marlin) line("G92 Z" + n(plate_mm));
+  else line("G10 L20 P0 Z" + n(plate_mm));
+  z_ = plate_mm;
+  rapid_z(plate_mm + 5.0);
+  message_pause("TAKE THE PROBE CLIP AND THE TOUCH PLATE AWAY, RESUME");
 }
 
 void HobbyWriter::end(double clear_z_mm, std::optional<aco::Point2> home) {

@@ -20,6 +20,7 @@
 
 #include "aco/geometry.h"
 #include "gcode/drilling.h"
+#include "milling.h"
 
 namespace gcode {
 
@@ -50,6 +51,14 @@ class HobbyWriter {
   // rapid to X Y, then the hole's moves. Throws std::invalid_argument for a
   // travel plane at or below the top of the part (Z 0).
   void hole(aco::Point2 at, const std::vector<ZMove>& moves, double travel_z_mm);
+  // Over a hole's helix start: up to at least `travel_z_mm`, a rapid there,
+  // then the milling moves (G2 arcs with I J; Marlin needs ARC_SUPPORT).
+  void milled_hole(aco::Point2 start, const std::vector<PathMove>& moves, double travel_z_mm);
+  // Z probed on a touch plate `plate_mm` thick lying on the part's top: down
+  // at most `travel_mm` until it touches (G38.2), that point set as Z
+  // plate_mm (G10 L20 on GRBL, G92 on Marlin), up 5 mm above the plate,
+  // then a pause to take the clip off.
+  void probe_plate(double plate_mm, double feed_mm_min, double travel_mm);
   // Spindle off, up to `clear_z`, to `home` if given, and the end (M2 on GRBL).
   void end(double clear_z_mm, std::optional<aco::Point2> home);
 
@@ -59,6 +68,7 @@ class HobbyWriter {
   std::string f(double mm_min) const;
   void line(const std::string& text);
   void dwell(double seconds);
+  void message_pause(const std::string& message);  // the message as the control shows it, then M0
 
   std::ostream& out_;
   Dialect dialect_;

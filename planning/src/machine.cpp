@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "json.h"
+#include "planning/owned_tools.h"
 #include "planning/placement.h"
 
 namespace planning {
@@ -92,6 +93,31 @@ Machine parse_machine(const std::string& text, const std::string& path) {
       m.clamps.push_back(r);
     }
   }
+  if (j.contains("drills_owned")) {
+    // "0.6,0.8,1.0", or a list of numbers and "DIA:-MINUS:+PLUS" strings.
+    const json& d = j["drills_owned"];
+    if (d.is_string()) {
+      m.drills_owned = d.get<std::string>();
+    } else if (d.is_array()) {
+      for (const json& e : d) {
+        if (!e.is_number() && !e.is_string()) throw UserError(path, 0, "\"drills_owned\" lists diameters in mm: [0.6, 0.8, \"1.0:-0.05:+0.1\"]");
+        m.drills_owned += (m.drills_owned.empty() ? "" : ",") + (e.is_string() ? e.get<std::string>() : gcode::format_number(e.get<double>(), 4));
+      }
+    } else {
+      throw UserError(path, 0, "\"drills_owned\" lists diameters in mm: [0.6, 0.8, \"1.0:-0.05:+0.1\"] or \"0.6,0.8,1.0\"");
+    }
+    parse_owned_drills(m.drills_owned, path + " drills_owned");  // refused here, naming the profile
+  }
+  auto positive = [&](const char* key, double high) -> std::optional<double> {
+    if (!j.contains(key)) return std::nullopt;
+    const double v = json_number(j, key, 0, path);
+    if (!(v > 0 && v <= high)) throw UserError(path, 0, std::string(key) + " must be in (0, " + fmt3(high) + "]");
+    return v;
+  };
+  m.end_mill_mm = positive("end_mill_mm", 100);
+  m.probe_plate_mm = positive("probe_plate_mm", 50);
+  m.probe_feed_mm_min = positive("probe_feed_mm_min", 5000).value_or(m.probe_feed_mm_min);
+  m.probe_travel_mm = positive("probe_travel_mm", 500).value_or(m.probe_travel_mm);
   return m;
 }
 

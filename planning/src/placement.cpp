@@ -205,4 +205,43 @@ std::size_t fill_missing_diameters(aco::HoleSet& holes, double diameter_mm) {
   return filled;
 }
 
+std::optional<MirrorAxis> mirror_axis_from_string(const std::string& text) {
+  if (text.size() < 3 || text[1] != '=' || (text[0] != 'x' && text[0] != 'y' && text[0] != 'X' && text[0] != 'Y')) return std::nullopt;
+  const std::string number = text.substr(2);
+  double v = 0.0;
+  auto r = std::from_chars(number.data(), number.data() + number.size(), v);
+  if (r.ec != std::errc() || r.ptr != number.data() + number.size() || !std::isfinite(v) || std::fabs(v) > 1e9) return std::nullopt;
+  return MirrorAxis{text[0] == 'x' || text[0] == 'X', v};
+}
+
+MirrorAxis resolve_mirror_axis(const aco::HoleSet& holes, const MirrorAxis& axis) {
+  if (axis.at) return axis;
+  const Extent e = extent_of(holes);
+  return MirrorAxis{axis.vertical, axis.vertical ? (e.x_min + e.x_max) / 2 : (e.y_min + e.y_max) / 2};
+}
+
+void mirror_holes(aco::HoleSet& holes, const MirrorAxis& axis) {
+  const double at = axis.at.value_or(0.0);
+  for (aco::Hole& h : holes) {
+    if (axis.vertical) h.center.x = 2.0 * at - h.center.x;
+    else h.center.y = 2.0 * at - h.center.y;
+  }
+}
+
+aco::HoleSet alignment_pins(const aco::HoleSet& holes, const MirrorAxis& axis, double diameter_mm) {
+  const Extent e = extent_of(holes);
+  const double at = axis.at.value_or(0.0);
+  aco::Hole a, b;
+  a.diameter = b.diameter = diameter_mm;
+  a.layer = b.layer = "ALIGNMENT PINS";
+  if (axis.vertical) {
+    a.center = {at, e.y_min - kAlignmentPinMarginMm};
+    b.center = {at, e.y_max + kAlignmentPinMarginMm};
+  } else {
+    a.center = {e.x_min - kAlignmentPinMarginMm, at};
+    b.center = {e.x_max + kAlignmentPinMarginMm, at};
+  }
+  return {a, b};
+}
+
 }  // namespace planning

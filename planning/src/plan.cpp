@@ -19,6 +19,19 @@ double xy_move_time(aco::Point2 a, aco::Point2 b, const Machine& m) {
   return std::max(rapid_time_s(dx, m.rapid_xy_mm_min, m.accel_mm_s2), rapid_time_s(dy, m.rapid_xy_mm_min, m.accel_mm_s2));
 }
 
+// Time of one milled hole from R: the feed to the top of the part, the
+// helix, the circle at the depth and the way to the centre at the tool's
+// feed, the rapid out.
+double milled_time_s(const gcode::Tool& t, double hole_mm, const gcode::ProgramSettings& s, const Machine& m,
+                     bool retract_initial) {
+  const auto zr = [&](double d) { return rapid_time_s(d, m.rapid_z_mm_min, m.accel_mm_s2); };
+  const gcode::Helix h = gcode::helix_for(hole_mm, t);
+  double time = (h.path_radius_mm == 0.0 ? s.r_plane_mm - t.depth_mm : s.r_plane_mm + h.length_mm()) / t.feed_mm_min * 60.0;
+  time += zr(s.r_plane_mm - t.depth_mm);
+  if (retract_initial) time += 2.0 * zr(s.initial_z_mm - s.r_plane_mm);
+  return time;
+}
+
 // Z time of one hole's cycle at the R plane: feed down, pecks, dwell, rapid out.
 double cycle_time_s(const gcode::Tool& t, const gcode::ProgramSettings& s, const Machine& m, bool retract_initial) {
   const double depth = s.r_plane_mm - t.depth_mm;
@@ -64,6 +77,9 @@ RouteStats route_stats(const aco::HoleSet& holes, const std::vector<ToolGroup>& 
       continue;
     }
     spend(split.tool_changes_s, m.tool_change_s);
+    // A touch plate: the probe's way down from the clearance plane at its
+    // feed is part of changing the tool (the operator's share is in tool_change_s).
+    if (s.probe_plate_mm) spend(split.tool_changes_s, (s.initial_z_mm - *s.probe_plate_mm) / s.probe_feed_mm_min * 60.0);
     if (waits_for_spindle) spend(split.pauses_s, m.spindle_start_s);
     // Down from Z home to the initial plane, once per tool (approximate Z home as 100 mm up).
     spend(split.moves_s, rapid_time_s(100.0, m.rapid_z_mm_min, m.accel_mm_s2));
@@ -73,7 +89,11 @@ RouteStats route_stats(const aco::HoleSet& holes, const std::vector<ToolGroup>& 
       spend(split.moves_s, xy_move_time(at, p, m));
       const bool last = i + 1 == order.size();
       const bool clear = !last && crosses_clamp(p, holes[order[i + 1]].center, m);
-      spend(split.drilling_s, m.hit_s > 0 ? m.hit_s : cycle_time_s(groups[g].tool, s, m, !s.retract_to_r || last || clear));
+      const gcode::Tool& tool = groups[g].tool;
+      const bool retract_initial = !s.retract_to_r || last || clear;
+      spend(split.drilling_s, tool.end_mill ? milled_time_s(tool, holes[order[i]].diameter, s, m, retract_initial)
+                              : m.hit_s > 0 ? m.hit_s
+                                            : cycle_time_s(tool, s, m, retract_initial));
       if (i == 0) spend(split.moves_s, rapid_time_s(s.initial_z_mm - s.r_plane_mm, m.rapid_z_mm_min, m.accel_mm_s2));
       at = p;
     }
@@ -224,7 +244,11 @@ void order_groups(const aco::HoleSet& holes, PlanResult& result, const PlanOptio
     if (last && options.return_at_end) p.end = finish;
     // The route's stops: a hole, or a chain (a drilled slot's holes) drilled
     // together in its own order, stopping at the chain's centroid.
-    const RouteUnits units = route_units(holes, group.input_order);
+    // Holes drilled first as they are (alignment pins); the colony routes the rest from the last of them.
+    const aco::Order prefix(group.input_order.begin(), group.input_order.begin() + static_cast<long>(group.fixed_prefix));
+    if (!prefix.empty()) p.start = holes[prefix.back()].center;
+    const RouteUnits units = route_units(holes, aco::Order(group.input_order.begin() + static_cast<long>(group.fixed_prefix),
+                                                           group.input_order.end()));
     p.points = units.points;
     // --time-limit bounds the whole run: each tool gets its share by hole count.
     aco::Params params = options.solver;
@@ -232,11 +256,19 @@ void order_groups(const aco::HoleSet& holes, PlanResult& result, const PlanOptio
       params.time_limit_s = std::max(0.01, options.solver.time_limit_s * static_cast<double>(group.input_order.size()) /
                                                static_cast<double>(holes.size()));
     }
-    group.solution = aco::solve(p, params);
-    group.optimized = units.expand(group.solution.order);
-    aco::Problem pnn = p;
-    pnn.start = at_nn;
-    group.nearest_neighbor = units.expand(aco::nearest_neighbor(pnn));
+    auto with_prefix = [&](aco::Order rest) {
+      rest.insert(rest.begin(), prefix.begin(), prefix.end());
+      return rest;
+    };
+    if (p.points.empty()) {
+      group.optimized = group.nearest_neighbor = prefix;
+    } else {
+      group.solution = aco::solve(p, params);
+      group.optimized = with_prefix(units.expand(group.solution.order));
+      aco::Problem pnn = p;
+      if (prefix.empty()) pnn.start = at_nn;
+      group.nearest_neighbor = with_prefix(units.expand(aco::nearest_neighbor(pnn)));
+    }
     at = holes[group.optimized.back()].center;
     at_nn = holes[group.nearest_neighbor.back()].center;
     result.iterations += group.solution.iterations;
@@ -276,7 +308,19 @@ PlanResult plan_job(const aco::HoleSet& holes, const PlanOptions& options, const
   }
 
   ToolTable table;
+  PlanResult result;
   const bool apart = options.keep_sources_apart && !options.hole_source.empty();
+  if (options.tooling.owned() && options.tools) {
+    throw UserError(source, 0, "--drills and --end-mill plan the tools you own; a --tools table names its own, drop one of them");
+  }
+  // The tools of some holes: the owned ones that make them, or one generated drill per diameter.
+  auto tools_for = [&](const aco::HoleSet& some) {
+    if (!options.tooling.owned()) return generate_tool_table(some, options.material, options.thickness_mm, m);
+    std::vector<DrillMapping> mapping;
+    ToolTable t = owned_tool_table(some, options.tooling, options.material, options.thickness_mm, m, source, mapping);
+    result.drill_map.insert(result.drill_map.end(), mapping.begin(), mapping.end());
+    return t;
+  };
   if (apart) {
     if (options.tools) throw UserError(source, 0, "keeping inputs apart generates each input's tools; drop --tools");
     // Each input's tools, numbered on from the previous input's.
@@ -287,7 +331,11 @@ PlanResult plan_job(const aco::HoleSet& holes, const PlanOptions& options, const
         if (options.hole_source[i] == k) mine.push_back(holes[i]);
       }
       if (mine.empty()) continue;
-      ToolTable part = generate_tool_table(mine, options.material, options.thickness_mm, m);
+      const std::size_t mapped = result.drill_map.size();
+      ToolTable part = tools_for(mine);
+      // This input's tools 1..n become first + 1..first + n.
+      const int first = static_cast<int>(table.entries.size());
+      for (std::size_t q = mapped; q < result.drill_map.size(); ++q) result.drill_map[q].tool += first;
       for (ToolTableEntry& e : part.entries) {
         e.tool.number = static_cast<int>(table.entries.size()) + 1;
         e.source = static_cast<int>(k);
@@ -295,10 +343,12 @@ PlanResult plan_job(const aco::HoleSet& holes, const PlanOptions& options, const
       }
     }
     table.generated = true;
+  } else if (options.tools) {
+    table = *options.tools;
+    complete_tool_table(table, options.material, options.thickness_mm, m);
   } else {
-    table = options.tools ? *options.tools : generate_tool_table(holes, options.material, options.thickness_mm, m);
+    table = tools_for(holes);
   }
-  PlanResult result;
   result.groups.resize(table.entries.size());
   std::vector<std::string> unfit;
   std::size_t unfit_count = 0;
@@ -307,7 +357,7 @@ PlanResult plan_job(const aco::HoleSet& holes, const PlanOptions& options, const
     std::size_t chosen = table.entries.size();
     for (std::size_t t = 0; t < table.entries.size(); ++t) {
       if (table.entries[t].source >= 0 && static_cast<std::uint32_t>(table.entries[t].source) != options.hole_source[i]) continue;
-      if (d >= table.entries[t].min_hole_mm - 1e-9 && d <= table.entries[t].max_hole_mm + 1e-9) {
+      if (table.entries[t].takes(d)) {
         chosen = t;
         break;
       }
@@ -332,6 +382,22 @@ PlanResult plan_job(const aco::HoleSet& holes, const PlanOptions& options, const
   result.groups.erase(std::remove_if(result.groups.begin(), result.groups.end(),
                                      [](const ToolGroup& g) { return g.input_order.empty(); }),
                       result.groups.end());
+  if (!options.first_holes.empty()) {
+    // The tool of the holes drilled first goes first, and they begin its route.
+    const aco::HoleIndex pin = options.first_holes.front();
+    auto holds = [&](const ToolGroup& g) { return std::find(g.input_order.begin(), g.input_order.end(), pin) != g.input_order.end(); };
+    auto it = std::find_if(result.groups.begin(), result.groups.end(), holds);
+    if (it == result.groups.end()) throw UserError(source, 0, "the holes drilled first are not among the holes");
+    std::rotate(result.groups.begin(), it, it + 1);
+    ToolGroup& g = result.groups.front();
+    for (aco::HoleIndex h : options.first_holes) {
+      const auto at = std::find(g.input_order.begin(), g.input_order.end(), h);
+      if (at == g.input_order.end()) throw UserError(source, 0, "the holes drilled first must share one tool");
+      g.input_order.erase(at);
+    }
+    g.input_order.insert(g.input_order.begin(), options.first_holes.begin(), options.first_holes.end());
+    g.fixed_prefix = options.first_holes.size();
+  }
 
   order_groups(holes, result, options);
   // Each tool's path is ordered from where the previous one ended, so on a
@@ -359,6 +425,7 @@ std::vector<gcode::ToolPass> to_passes(const aco::HoleSet& holes, const PlanResu
     for (aco::HoleIndex h : g.optimized) {
       pass.holes.push_back(holes[h].center);
       pass.index.push_back(++index);
+      if (g.tool.end_mill) pass.mill_diameter.push_back(holes[h].diameter);
     }
     if (!machine.clamps.empty()) {
       pass.clear_after.assign(pass.holes.size(), false);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 #include "json.h"
 
@@ -41,6 +42,11 @@ ToolTable parse_tool_table(const std::string& text, const std::string& path) {
     tool.diameter_mm = json_number(e, "diameter_mm", -1, where);
     if (!(tool.diameter_mm > 0)) throw UserError(where, 0, "\"diameter_mm\" must be given and positive");
     if (e.contains("name") && e["name"].is_string()) tool.name = e["name"].get<std::string>();
+    // Left out, these come from a generated tool of the diameter (complete_tool_table).
+    entry.has_rpm = e.contains("rpm");
+    entry.has_feed = e.contains("feed_mm_min");
+    entry.has_depth = e.contains("depth_mm");
+    entry.has_cycle = e.contains("cycle");
     tool.spindle_rpm = static_cast<int>(json_number(e, "rpm", 3000, where));
     tool.feed_mm_min = json_number(e, "feed_mm_min", 250, where);
     tool.depth_mm = json_number(e, "depth_mm", -8, where);
@@ -69,62 +75,161 @@ ToolTable parse_tool_table(const std::string& text, const std::string& path) {
   return t;
 }
 
-ToolTable generate_tool_table(const aco::HoleSet& holes, Material material, double thickness_mm, const Machine& machine) {
-  const int max_rpm = machine.max_rpm;
+namespace {
+
+// Cutting speed (m/min) and feed per revolution as a fraction of the
+// diameter, for HSS drills (Machinery's Handbook ranges, conservative end).
+void hss_data(Material material, double& vc, double& feed_per_d) {
+  switch (material) {
+    case Material::Steel: vc = 20.0; feed_per_d = 0.015; return;
+    case Material::Aluminium: vc = 60.0; feed_per_d = 0.025; return;
+    case Material::Pcb: vc = 100.0; feed_per_d = 0.02; return;
+  }
+}
+
+int rpm_for(double vc_m_min, double d, int max_rpm) {
+  return static_cast<int>(std::clamp(std::round(1000.0 * vc_m_min / (M_PI * d)), 100.0, std::max(100.0, double(max_rpm))));
+}
+
+}  // namespace
+
+gcode::Tool generated_drill(double diameter_mm, Material material, double thickness_mm, const Machine& machine) {
   // A board is drilled with carbide PCB drills in one stroke unless the
   // machine says it uses something else; a plate with HSS twist drills.
   const bool carbide = machine.drills == "carbide" || (machine.drills.empty() && material == Material::Pcb);
+  double vc = 20.0, feed_per_d = 0.015;
+  hss_data(material, vc, feed_per_d);
+  gcode::Tool tool;
+  tool.diameter_mm = diameter_mm;
+  const double d = std::max(tool.diameter_mm, 0.1);
+  if (carbide) {
+    // Solid carbide micro drills in FR-4 (drill makers' charts, e.g. Union
+    // Tool's and Kyocera's PCB drilling conditions): about 150 m/min at the
+    // edge, and a feed per revolution growing with the diameter from about
+    // 0.01 mm at 0.2 mm to 0.05 mm at 2 mm and above; one stroke, no pecks.
+    const double vc_carbide = material == Material::Pcb ? 150.0 : vc * 2.0;
+    tool.spindle_rpm = rpm_for(vc_carbide, d, machine.max_rpm);
+    const double per_rev = std::clamp(0.006 + 0.022 * d, 0.008, 0.05);
+    tool.feed_mm_min = std::max(10.0, std::round(tool.spindle_rpm * per_rev));
+    if (material == Material::Pcb) {
+      // Through the board, the 130-degree point of a PCB drill (0.233 D) and
+      // 0.3 mm into the spoilboard, at most 1.4 mm below the board: the full
+      // diameter is through for drills up to 4.7 mm, and a 1.6 mm board is
+      // never drilled deeper than 3 mm.
+      tool.depth_mm = -(thickness_mm + std::min(0.5 * d / std::tan(65.0 * M_PI / 180.0) + 0.3, 1.4));
+    } else {
+      tool.depth_mm = -(thickness_mm + 0.3 * d + 0.5);
+    }
+    tool.max_hits = default_max_hits(tool.diameter_mm);
+    return tool;
+  }
+  tool.spindle_rpm = rpm_for(vc, d, machine.max_rpm);
+  tool.feed_mm_min = std::max(10.0, std::round(tool.spindle_rpm * feed_per_d * d));
+  // Through the plate, plus the 118° point (0.3 D) and 0.5 mm to break through.
+  tool.depth_mm = -(thickness_mm + 0.3 * d + 0.5);
+  if (-tool.depth_mm > 4.0 * d) {
+    tool.cycle = gcode::Cycle::G83;  // deep hole: peck to clear chips
+    tool.peck_mm = std::max(0.5, std::round(d * 10.0) / 10.0);
+  }
+  return tool;
+}
+
+gcode::Tool generated_end_mill(double diameter_mm, Material material, double thickness_mm, const Machine& machine) {
+  gcode::Tool tool;
+  tool.diameter_mm = diameter_mm;
+  tool.end_mill = true;
+  const double d = std::max(diameter_mm, 0.1);
+  // Carbide end mills, two flutes: cutting speed and chip load per tooth
+  // from makers' charts for small end mills (conservative end for the light
+  // machines that mill boards at home), and depth a helix turn.
+  double vc = 150.0, chip_per_d = 0.015, pitch_per_d = 0.5;
+  switch (material) {
+    case Material::Steel: vc = 60.0; chip_per_d = 0.005; pitch_per_d = 0.1; break;
+    case Material::Aluminium: vc = 200.0; chip_per_d = 0.01; pitch_per_d = 0.25; break;
+    case Material::Pcb: break;
+  }
+  tool.spindle_rpm = rpm_for(vc, d, machine.max_rpm);
+  tool.feed_mm_min = std::max(10.0, std::round(tool.spindle_rpm * 2.0 * std::clamp(chip_per_d * d, 0.002, 0.05)));
+  tool.depth_mm = -(thickness_mm + 0.3);
+  tool.helix_pitch_mm = pitch_per_d * d;
+  return tool;
+}
+
+ToolTable generate_tool_table(const aco::HoleSet& holes, Material material, double thickness_mm, const Machine& machine) {
   std::vector<long long> keys;  // diameters in micrometres
   keys.reserve(holes.size());
   for (const aco::Hole& h : holes) keys.push_back(std::llround(h.diameter * 1000.0));
   std::sort(keys.begin(), keys.end());
   keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
-  // Cutting speed (m/min) and feed per revolution as a fraction of the
-  // diameter, for HSS drills (Machinery's Handbook ranges, conservative end).
-  double vc = 20.0, feed_per_d = 0.015;
-  switch (material) {
-    case Material::Steel: vc = 20.0; feed_per_d = 0.015; break;
-    case Material::Aluminium: vc = 60.0; feed_per_d = 0.025; break;
-    case Material::Pcb: vc = 100.0; feed_per_d = 0.02; break;
-  }
   ToolTable t;
   t.generated = true;
   int number = 0;
   for (long long k : keys) {
     ToolTableEntry e;
-    gcode::Tool& tool = e.tool;
-    tool.number = ++number;
-    tool.diameter_mm = static_cast<double>(k) / 1000.0;
-    const double d = std::max(tool.diameter_mm, 0.1);
-    if (carbide) {
-      // Solid carbide micro drills in FR-4 (drill makers' charts, e.g. Union
-      // Tool's and Kyocera's PCB drilling conditions): about 150 m/min at the
-      // edge, and a feed per revolution growing with the diameter from about
-      // 0.01 mm at 0.2 mm to 0.05 mm at 2 mm and above; one stroke, no pecks.
-      const double vc_carbide = material == Material::Pcb ? 150.0 : vc * 2.0;
-      tool.spindle_rpm = static_cast<int>(std::clamp(std::round(1000.0 * vc_carbide / (M_PI * d)), 100.0, std::max(100.0, double(max_rpm))));
-      const double per_rev = std::clamp(0.006 + 0.022 * d, 0.008, 0.05);
-      tool.feed_mm_min = std::max(10.0, std::round(tool.spindle_rpm * per_rev));
-      tool.depth_mm = -(thickness_mm + 0.3 * d + 0.5);
-      tool.max_hits = default_max_hits(tool.diameter_mm);
-      e.min_hole_mm = tool.diameter_mm - 0.0005;
-      e.max_hole_mm = tool.diameter_mm + 0.0005;
-      t.entries.push_back(e);
-      continue;
-    }
-    tool.spindle_rpm = static_cast<int>(std::clamp(std::round(1000.0 * vc / (M_PI * d)), 100.0, std::max(100.0, double(max_rpm))));
-    tool.feed_mm_min = std::max(10.0, std::round(tool.spindle_rpm * feed_per_d * d));
-    // Through the plate, plus the 118° point (0.3 D) and 0.5 mm to break through.
-    tool.depth_mm = -(thickness_mm + 0.3 * d + 0.5);
-    if (-tool.depth_mm > 4.0 * d) {
-      tool.cycle = gcode::Cycle::G83;  // deep hole: peck to clear chips
-      tool.peck_mm = std::max(0.5, std::round(d * 10.0) / 10.0);
-    }
-    e.min_hole_mm = tool.diameter_mm - 0.0005;
-    e.max_hole_mm = tool.diameter_mm + 0.0005;
+    e.tool = generated_drill(static_cast<double>(k) / 1000.0, material, thickness_mm, machine);
+    e.tool.number = ++number;
+    e.min_hole_mm = e.tool.diameter_mm - 0.0005;
+    e.max_hole_mm = e.tool.diameter_mm + 0.0005;
     t.entries.push_back(e);
   }
   return t;
+}
+
+bool ToolTableEntry::takes(double hole_mm) const {
+  if (takes_mm.empty()) return hole_mm >= min_hole_mm - 1e-9 && hole_mm <= max_hole_mm + 1e-9;
+  return std::any_of(takes_mm.begin(), takes_mm.end(), [&](double d) { return std::fabs(d - hole_mm) <= 0.0005 + 1e-9; });
+}
+
+ToolTable owned_tool_table(const aco::HoleSet& holes, const Tooling& tooling, Material material, double thickness_mm,
+                           const Machine& machine, const std::string& source, std::vector<DrillMapping>& mapping) {
+  std::map<long long, std::size_t> count;  // designed diameter (µm) → holes
+  for (const aco::Hole& h : holes) ++count[std::llround(h.diameter * 1000.0)];
+  std::vector<std::pair<double, std::size_t>> diameters;
+  for (const auto& [k, n] : count) diameters.push_back({static_cast<double>(k) / 1000.0, n});
+  const std::vector<DiameterChoice> choices = choose_drills(diameters, tooling, source);
+  ToolTable t;
+  t.generated = true;
+  std::map<std::size_t, std::size_t> entry_of_drill;  // drills are ascending: so are their entries
+  for (const DiameterChoice& c : choices) {
+    if (c.drill) entry_of_drill.emplace(*c.drill, 0);
+  }
+  for (auto& [drill, entry] : entry_of_drill) {
+    entry = t.entries.size();
+    ToolTableEntry e;
+    e.tool = generated_drill(tooling.drills[drill].diameter_mm, material, thickness_mm, machine);
+    e.tool.number = static_cast<int>(t.entries.size()) + 1;
+    t.entries.push_back(e);
+  }
+  const bool milled = std::any_of(choices.begin(), choices.end(), [](const DiameterChoice& c) { return !c.drill; });
+  if (milled) {
+    ToolTableEntry e;
+    e.tool = generated_end_mill(*tooling.end_mill_mm, material, thickness_mm, machine);
+    e.tool.number = static_cast<int>(t.entries.size()) + 1;
+    t.entries.push_back(e);
+  }
+  mapping.clear();
+  for (const DiameterChoice& c : choices) {
+    ToolTableEntry& e = c.drill ? t.entries[entry_of_drill.at(*c.drill)] : t.entries.back();
+    e.takes_mm.push_back(c.designed_mm);
+    mapping.push_back({c.designed_mm, c.holes, e.tool.number, e.tool.diameter_mm, !c.drill});
+  }
+  return t;
+}
+
+void complete_tool_table(ToolTable& table, Material material, double thickness_mm, const Machine& machine) {
+  for (ToolTableEntry& e : table.entries) {
+    if (e.has_rpm && e.has_feed && e.has_depth && e.has_cycle) continue;
+    const gcode::Tool g = generated_drill(e.tool.diameter_mm, material, thickness_mm, machine);
+    if (!e.has_rpm) e.tool.spindle_rpm = g.spindle_rpm;
+    if (!e.has_feed) e.tool.feed_mm_min = g.feed_mm_min;
+    if (!e.has_depth) e.tool.depth_mm = g.depth_mm;
+    if (!e.has_cycle && e.tool.cycle == gcode::Cycle::G81 && e.tool.peck_mm == 0 && e.tool.dwell_s == 0) {
+      // A peck or a dwell given says which cycle was meant; otherwise the generated one.
+      e.tool.cycle = g.cycle;
+      e.tool.peck_mm = g.peck_mm;
+    }
+    e.has_rpm = e.has_feed = e.has_depth = e.has_cycle = true;
+  }
 }
 
 double r_plane_mm(const Machine& machine, Material material) {

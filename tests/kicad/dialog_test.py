@@ -80,6 +80,27 @@ class Dialog(unittest.TestCase):
             self.assertTrue(os.path.exists(os.path.join(d, "video-drill.gcode")))
             if shots:
                 screenshot(dialog, os.path.join(shots, "kicad-dialog-planned.png"))
+            # Issue 53: the drills owned, an end mill, the back of the board and a touch plate.
+            dialog.drills.SetValue("0.4, 0.6,0.8,1.0")
+            dialog.end_mill.SetValue(1.0)
+            dialog.from_back.SetValue(True)
+            dialog.probe_plate.SetValue(0.5)
+            dialog.on_plan(None)
+            text = dialog.result.GetValue()
+            self.assertEqual(dialog.result.GetForegroundColour(), wx.BLACK, text)
+            self.assertIn("milled with the 1.000 mm end mill", text)
+            self.assertIn("0.400 mm drill", text)
+            with open(os.path.join(d, "video-drill.gcode")) as f:
+                program = f.read()
+            self.assertIn("G38.2", program)
+            self.assertIn("SIDE: BACK", program)
+            self.assertIn("\nG2 ", program)
+            if shots:
+                screenshot(dialog, os.path.join(shots, "kicad-dialog-owned-tools.png"))
+            dialog.drills.SetValue("")
+            dialog.end_mill.SetValue(0)
+            dialog.from_back.SetValue(False)
+            dialog.probe_plate.SetValue(0)
             # Another dialect renames the program while the user has not chosen a file.
             dialog.dialect.SetSelection(1 + ["haas", "fanuc", "linuxcnc", "grbl", "marlin"].index("linuxcnc"))
             dialog.on_machine(None)

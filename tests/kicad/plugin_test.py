@@ -193,6 +193,26 @@ class DemoBoards(unittest.TestCase):
                                    capture_output=True, text=True)
                 self.assertEqual(v.returncode, 0, v.stdout + v.stderr)
 
+    def test_owned_drills_and_an_end_mill_pass_through_the_headless_command(self):
+        # Issue 53: the pic_programmer board with four drills and a 1 mm end mill.
+        with tempfile.TemporaryDirectory() as d:
+            path = demo("pic_programmer")
+            program, report = os.path.join(d, "p.gcode"), os.path.join(d, "r.json")
+            drills = os.path.join(d, "drills")
+            owned = ["--drills", "0.6,0.8,1.0,1.2", "--end-mill", "1.0"]
+            done = headless(path, "-o", program, "--machine", "router", "--origin", "drawing", "--seed", "1",
+                            "--iterations", "5", "--drill-files", drills, "--report", report, "-q", *owned)
+            self.assertEqual(done.returncode, 0, done.stderr)
+            self.assertEqual(gvalidate_refusal(program), "")
+            with open(report) as f:
+                r = json.load(f)
+            self.assertEqual(len(r["tools"]), 5)
+            self.assertEqual(r["tools"][-1]["kind"], "end_mill")
+            inputs = sorted(glob.glob(os.path.join(drills, "*.drl")))
+            v = subprocess.run([ACODRILL, "verify", program, "--holes"] + inputs + ["--origin", "drawing"] + owned,
+                               capture_output=True, text=True)
+            self.assertEqual(v.returncode, 0, v.stdout + v.stderr)
+
     def test_linuxcnc_program_at_the_default_origin_and_plated_apart(self):
         with tempfile.TemporaryDirectory() as d:
             path = demo("pic_programmer")
@@ -296,6 +316,9 @@ class Choices(unittest.TestCase):
                          ["--machine", "vf2", "--dialect", "fanuc", "--origin", "62.230000,-153.670000",
                           "--keep-files-apart", "--time-limit", "30", "--units", "inch"])
         self.assertEqual(job.plan_options(job.Choices(time_limit_s=0)), ["--machine", "router", "--origin", "lower-left"])
+        owned = job.Choices(time_limit_s=0, drills=" 0.6, 0.8,1.0 ", end_mill_mm=1.0, from_back=True, probe_plate_mm=0.5)
+        self.assertEqual(job.plan_options(owned), ["--machine", "router", "--origin", "lower-left", "--drills", "0.6,0.8,1.0",
+                                                   "--end-mill", "1", "--side", "back", "--probe-plate", "0.5"])
         with self.assertRaises(job.PlanError):
             job.plan_options(job.Choices(dialect="mach3"))
         self.assertEqual(job.default_program("/b/x.kicad_pcb", "linuxcnc"), "/b/x-drill.ngc")

@@ -7,6 +7,7 @@
 #include "aco/geometry.h"
 #include "gcode/drilling.h"
 #include "gcode/interpreter.h"
+#include "planning/owned_tools.h"
 
 namespace app {
 
@@ -14,7 +15,14 @@ namespace app {
 // Positions match within the program's printed precision; where the program
 // names its tools' diameters ("(T1 D=...)"), concentric holes are told apart
 // by them and a hole drilled with a tool of another diameter is a fault.
-std::vector<std::string> check_drilled(const gcode::Interpretation& run, const aco::HoleSet& expected);
+// With the tools the user owns (`tooling`, as plan was given them), a hole
+// may be drilled by an owned drill that fits it, and one milled by a helix
+// counts as a hole of 2r + the end mill's diameter (within 0.01 mm) at the
+// helix's centre.
+std::vector<std::string> check_drilled(const gcode::Interpretation& run, const aco::HoleSet& expected,
+                                       const planning::Tooling& tooling = {});
+// Within this of the designed diameter, a milled hole is made to size.
+constexpr double kMilledToleranceMm = 0.01;
 
 // The same check against another drilling program (issue 14: `verify
 // better.nc --holes PROGRAM.nc`): every hole it drills is drilled as often,

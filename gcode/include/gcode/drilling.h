@@ -85,6 +85,9 @@ struct ProgramHole {
   std::optional<double> arrive_z_mm;
   std::uint32_t line = 0;      // the line that drills it (the cycle line, or the first feed down)
   std::uint32_t first_line = 0, last_line = 0;  // the lines that make it, XY approach to last Z move
+  // Milled by arcs about `at` (lenient reading only): the radius of the
+  // tool's centre path; the hole is that twice, plus the tool's diameter.
+  std::optional<double> milled_radius_mm;
 };
 
 // One tool's holes between two tool changes (or spindle changes), in program order.

@@ -28,6 +28,9 @@ struct DrilledHole {
   double x_mm = 0.0, y_mm = 0.0;
   double bottom_z_mm = 0.0;
   std::uint32_t line = 0;
+  // A hole milled by a helix: the radius of the tool's path about the centre
+  // (the hole is 2 r plus the tool's diameter); 0: drilled or plunged.
+  double milled_radius_mm = 0.0;
 };
 
 struct Interpretation {

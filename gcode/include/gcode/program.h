@@ -36,6 +36,11 @@ struct Tool {
   double peck_mm = 0.0;        // Q for G83/G73
   double dwell_s = 0.0;        // P for G82
   int max_hits = 0;            // the drill's life in holes (0: no limit); a worn drill is replaced by a sister tool
+  // An end mill: each hole is milled by a helix about its centre (G2 with I J,
+  // helix_pitch_mm of depth a turn at most, a full circle at the depth, out
+  // through the centre) instead of drilled with the canned cycle.
+  bool end_mill = false;
+  double helix_pitch_mm = 0.0;
 };
 
 // One tool's holes in drilling order. `index` gives each hole's 1-based number
@@ -47,6 +52,8 @@ struct ToolPass {
   // clear_after[i]: the move from hole i to the next crosses a clamp, so hole i
   // retracts to the initial plane (G98). Empty = no clamps.
   std::vector<bool> clear_after;
+  // An end mill's pass: the diameter each hole is milled to (empty: drilled).
+  std::vector<double> mill_diameter;
 };
 
 struct ProgramSettings {
@@ -65,7 +72,27 @@ struct ProgramSettings {
   // moves G0 at the last F given, so every G0 names it; 0: leave it out).
   double spindle_start_s = 0.0;
   double travel_feed_mm_min = 0.0;
+  // A touch plate this thick (mm) on the part's top: after each tool change
+  // Z is probed on it (G38.2) and set to its thickness, on GRBL, Marlin and
+  // LinuxCNC. Probing runs down at most probe_travel_mm at probe_feed_mm_min.
+  std::optional<double> probe_plate_mm;
+  double probe_feed_mm_min = 60.0;
+  double probe_travel_mm = 30.0;
 };
+
+// How a hole is milled by a helix: about its centre on a circle of
+// `path_radius_mm` (hole radius less the end mill's), down from the top of
+// the part (Z 0) in `turns` equal turns of at most the tool's pitch.
+struct Helix {
+  double path_radius_mm = 0.0;
+  int turns = 0;
+  double depth_per_turn_mm = 0.0;
+  // Cutting length: the helix, the full circle at the depth, the way to the centre.
+  double length_mm() const;
+};
+// Below this path radius the end mill is plunged straight: the hole is its size.
+constexpr double kPlungeRadiusMm = 0.002;
+Helix helix_for(double hole_diameter_mm, const Tool& end_mill);
 
 const char* to_string(Dialect d);
 // False for GRBL and Marlin: no canned cycles, no M6, no G43, no G98/G99.
@@ -74,7 +101,7 @@ std::optional<Dialect> dialect_from_string(const std::string& name);
 const char* to_string(Cycle c);
 std::optional<Cycle> cycle_from_string(const std::string& name);
 
-// The tool's name, or "6.350 MM DRILL" made from its diameter.
+// The tool's name, or "6.350 MM DRILL" ("1.000 MM END MILL") made from its diameter.
 std::string tool_name(const Tool& tool);
 
 // Text made safe for a "(...)" comment: parentheses become '/', one line,

@@ -57,6 +57,12 @@ struct Machine {
     double x_min, y_min, x_max, y_max;
   };
   std::vector<Rect> clamps;
+  // The tools on the bench, as --drills, --end-mill and --probe-plate give
+  // them (the options win): the drills owned ("0.6,0.8:-0.05:+0.1,1.0"), an
+  // end mill, a touch plate's thickness, and how its probing runs.
+  std::string drills_owned;
+  std::optional<double> end_mill_mm, probe_plate_mm;
+  double probe_feed_mm_min = 60.0, probe_travel_mm = 30.0;
 };
 
 // True when the straight move a → b passes over any clamp of the machine.

@@ -73,6 +73,26 @@ std::vector<PanelCopy> parse_panel(const std::string& json_text, const std::stri
 aco::HoleSet panelize(const aco::HoleSet& board, const std::vector<PanelCopy>& copies,
                       std::vector<std::uint32_t>& hole_source);
 
+// Drilling a board from its back (--side back): the holes mirrored about a
+// line, the vertical line through the centre of the holes' extent unless
+// --mirror-axis says x=V (the vertical line X = V) or y=V (the horizontal
+// line Y = V), in input coordinates.
+struct MirrorAxis {
+  bool vertical = true;          // x = V: X mirrored; else y = V: Y mirrored
+  std::optional<double> at;      // nullopt: the centre of the holes' extent
+};
+std::optional<MirrorAxis> mirror_axis_from_string(const std::string& text);
+// Resolves the axis on these holes (its position, where not given).
+MirrorAxis resolve_mirror_axis(const aco::HoleSet& holes, const MirrorAxis& axis);
+// Mirrors the holes about the (resolved) axis.
+void mirror_holes(aco::HoleSet& holes, const MirrorAxis& axis);
+// Two alignment pin holes of `diameter_mm` on the (resolved) axis, each
+// kAlignmentPinMarginMm beyond the outermost hole centre on that line's
+// direction, so that they lie outside the board and the board turned over
+// about the line lands on the same pins.
+constexpr double kAlignmentPinMarginMm = 10.0;
+aco::HoleSet alignment_pins(const aco::HoleSet& holes, const MirrorAxis& axis, double diameter_mm);
+
 // Gives every hole without a diameter (0: a CSV row without one, a TSPLIB
 // node) the one the user chose (--default-diameter); returns how many.
 std::size_t fill_missing_diameters(aco::HoleSet& holes, double diameter_mm);

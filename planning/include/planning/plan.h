@@ -40,6 +40,12 @@ struct PlanOptions {
   // otherwise holes of one diameter share a tool whatever file they are in.
   std::vector<std::uint32_t> hole_source;
   bool keep_sources_apart = false;
+  // The drills the user owns and an end mill (empty: one generated drill per
+  // diameter, or the tool table).
+  Tooling tooling;
+  // Holes drilled before all others, in this order (alignment pins): their
+  // tool goes first and they begin its route.
+  std::vector<aco::HoleIndex> first_holes;
 };
 
 struct ToolGroup {
@@ -48,6 +54,9 @@ struct ToolGroup {
   aco::Order optimized;                     // the same indices, in drilling order
   aco::Order nearest_neighbor;              // baseline
   aco::Solution solution;
+  // The first `fixed_prefix` holes of every order are drilled first, as they
+  // are (alignment pins); the colony routes the rest from the last of them.
+  std::size_t fixed_prefix = 0;
 };
 
 // Where the machine's time goes: moving between holes (XY rapids, and Z to
@@ -72,6 +81,7 @@ struct PlanResult {
   double solver_wall_s = 0.0;
   std::vector<double> thread_busy_s;
   aco::Params solver;       // with defaults resolved
+  std::vector<DrillMapping> drill_map;  // owned tools: what each designed diameter is made with
 };
 
 // Groups the holes (in program coordinates) by tool and orders every group.

@@ -38,6 +38,14 @@ class DrillDialog(wx.Dialog):
         self.apart = row("Plated / non-plated", wx.RadioBox(self, choices=["together (a drill per diameter)",
                                                                             "apart (plated first)"]))
         self.budget = row("Time budget (s)", wx.SpinCtrlDouble(self, min=0.5, max=3600, initial=10, inc=1))
+        # The tools on the bench: empty or 0 leaves them to acodrill (one drill per diameter) and the machine file.
+        self.drills = row("Drills you own (mm)", wx.TextCtrl(self, value=""))
+        self.drills.SetHint("e.g. 0.6,0.8,1.0,1.2 (empty: a drill per diameter)")
+        self.end_mill = row("End mill (mm, 0: none)", wx.SpinCtrlDouble(self, min=0, max=10, initial=0, inc=0.1))
+        self.end_mill.SetDigits(2)
+        self.from_back = row("", wx.CheckBox(self, label="Drill from the back (holes mirrored)"))
+        self.probe_plate = row("Touch plate (mm, 0: none)", wx.SpinCtrlDouble(self, min=0, max=20, initial=0, inc=0.1))
+        self.probe_plate.SetDigits(2)
         program = job.default_program(board_path, "grbl")
         self.program = row("Program", wx.FilePickerCtrl(self, path=program, style=wx.FLP_SAVE | wx.FLP_USE_TEXTCTRL))
         self.write_sheet = row("", wx.CheckBox(self, label="Write the setup sheet beside the program"))
@@ -73,7 +81,9 @@ class DrillDialog(wx.Dialog):
         return job.Choices(machine=machine, dialect="" if d <= 0 else job.DIALECTS[d - 1],
                            origin=job.ORIGINS[self.origin.GetSelection()][0],
                            plated_apart=self.apart.GetSelection() == 1, time_limit_s=self.budget.GetValue(),
-                           program=self.program.GetPath(), write_setup_sheet=self.write_sheet.GetValue())
+                           program=self.program.GetPath(), write_setup_sheet=self.write_sheet.GetValue(),
+                           drills=self.drills.GetValue(), end_mill_mm=self.end_mill.GetValue(),
+                           from_back=self.from_back.GetValue(), probe_plate_mm=self.probe_plate.GetValue())
 
     def on_machine(self, _event):
         c = self.choices()

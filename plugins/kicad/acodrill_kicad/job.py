@@ -45,6 +45,11 @@ class Choices:
     time_limit_s: float = 10.0
     program: str = ""                # "": beside the board (default_program)
     write_setup_sheet: bool = True   # PROGRAM-setup.html beside the program
+    # The tools on the bench (issue 53): "" / 0 / False leave them to acodrill and the machine profile.
+    drills: str = ""                 # the drills owned, "0.6,0.8,1.0,1.2" (--drills)
+    end_mill_mm: float = 0.0         # an end mill for what no drill fits (--end-mill)
+    from_back: bool = False          # drill the board from its back (--side back)
+    probe_plate_mm: float = 0.0      # a touch plate's thickness (--probe-plate)
     extra: List[str] = field(default_factory=list)  # further `acodrill plan` options
 
 
@@ -67,6 +72,14 @@ def plan_options(choices: Choices, drill_origin_xy: Optional[Tuple[float, float]
         args.append("--keep-files-apart")
     if choices.time_limit_s and choices.time_limit_s > 0:
         args += ["--time-limit", f"{choices.time_limit_s:g}"]
+    if choices.drills.strip():
+        args += ["--drills", "".join(choices.drills.split())]
+    if choices.end_mill_mm and choices.end_mill_mm > 0:
+        args += ["--end-mill", f"{choices.end_mill_mm:g}"]
+    if choices.from_back:
+        args += ["--side", "back"]
+    if choices.probe_plate_mm and choices.probe_plate_mm > 0:
+        args += ["--probe-plate", f"{choices.probe_plate_mm:g}"]
     return args + list(choices.extra)
 
 
@@ -214,6 +227,11 @@ def summary(report: dict) -> str:
                                             (("moves", "moves"), ("drilling", "drilling"),
                                              ("tool_changes", "tool changes"), ("pauses", "pauses"))),
     ]
+    # The tools you own: which drill makes which designed diameter, and by how much it differs.
+    for d in report.get("drill_map", []):
+        made = (f"milled with the {d['tool_diameter_mm']:.3f} mm end mill" if d.get("made_as") == "milled" else
+                f"{d['tool_diameter_mm']:.3f} mm drill ({d.get('oversize_mm', 0.0):+.3f})")
+        lines.append(f"  {d['designed_mm']:.3f} mm x {d['holes']}: T{d['tool']} {made}")
     return "\n".join(lines)
 
 
