@@ -163,6 +163,7 @@ Canon run_rs274(const std::string& program_path) {
   int tool = 0;
   double x = 0, y = 0, z = 0;
   bool open = false;  // a hole is being made here
+  std::vector<std::size_t> cut;  // the holes the milling cut under way makes
   std::istringstream in(r.out);
   for (std::string line; std::getline(in, line);) {
     std::smatch m;
@@ -182,18 +183,24 @@ Canon run_rs274(const std::string& program_path) {
     }
     if (m[1] == "ARC_FEED") {
       // ARC_FEED(end x, end y, centre x, centre y, turn, end z, ...)
+      // One cut: a helix (one centre) or a slot's racetrack (its two ends' centres), one radius.
       EXPECT_TRUE(open) << "an arc that does not go on from a feed down: " << line;
       if (open) {
-        Made& h = c.made.back();
         const double r0 = std::hypot(x - v[2], y - v[3]);
-        if (h.path_radius == 0) {
-          h.x = v[2], h.y = v[3], h.path_radius = r0;
-        } else {
-          EXPECT_NEAR(h.x, v[2], 1e-6) << line;
-          EXPECT_NEAR(h.y, v[3], 1e-6) << line;
-          EXPECT_NEAR(h.path_radius, r0, 1e-6) << line;
+        if (c.made.back().path_radius == 0) {
+          c.made.back().x = v[2], c.made.back().y = v[3], c.made.back().path_radius = r0;
+          cut = {c.made.size() - 1};
         }
-        h.bottom = std::min(h.bottom, v[5]);
+        EXPECT_NEAR(c.made.back().path_radius, r0, 0.002) << line;
+        std::size_t at = c.made.size();
+        for (std::size_t k : cut) {
+          if (std::hypot(c.made[k].x - v[2], c.made[k].y - v[3]) < 1e-6) at = k;
+        }
+        if (at == c.made.size()) {
+          c.made.push_back({tool, v[2], v[3], v[5], r0});
+          cut.push_back(at);
+        }
+        c.made[at].bottom = std::min(c.made[at].bottom, v[5]);
       }
       x = v[0], y = v[1], z = v[5];
       continue;
@@ -202,14 +209,16 @@ Canon run_rs274(const std::string& program_path) {
     if (xy_moved) {
       // Travel only with rapids above the part; a feed in XY only inside a hole being milled (to its centre).
       if (m[1] == "STRAIGHT_TRAVERSE") EXPECT_GT(std::min(z, v[2]), 1e-9) << "a rapid at or below the top: " << line;
-      else EXPECT_TRUE(open && c.made.back().path_radius > 0) << "a feed in XY outside a milled hole: " << line;
-      if (m[1] == "STRAIGHT_TRAVERSE") open = false;
+      else EXPECT_TRUE(open && !cut.empty()) << "a feed in XY outside a milled hole: " << line;
+      if (m[1] == "STRAIGHT_TRAVERSE") open = false, cut.clear();
     } else if (m[1] == "STRAIGHT_FEED" && v[2] < z - 1e-9) {
       if (!open) c.made.push_back({tool, v[0], v[1], v[2], 0.0});
+      if (!open) cut.clear();
       open = true;
       c.made.back().bottom = std::min(c.made.back().bottom, v[2]);
     } else if (m[1] == "STRAIGHT_TRAVERSE" && v[2] > z + 1e-9 && v[2] > 0) {
       open = false;  // out of the hole
+      cut.clear();
     }
     x = v[0], y = v[1], z = v[2];
   }
@@ -349,6 +358,39 @@ INSTANTIATE_TEST_SUITE_P(kicad, OwnedToolsOnBoards,
                          ::testing::Values(Bench{"pic_programmer", "0.6,0.8,1.0,1.2"}, Bench{"video", "0.4,0.6,0.8,1.0"},
                                            Bench{"StickHub", "0.3,0.4,0.8,1.0"}),
                          [](const auto& p) { return p.param.board; });
+
+// --slots mill: StickHub's one routed oval (its drill file: T3C1.500, G00X148.75Y-109.25 M15
+// G01X151.25Y-109.25 M16) milled along its length: rs274 reads arcs round its two ends, 1.5 mm.
+TEST(owned_tools, a_slot_is_milled_along_its_length_round_both_ends) {
+  testutil::TempDir t;
+  const std::string drl = testutil::data("kicad/StickHub-mm-decimal.drl");
+  aco::HoleSet expected = testutil::read_holes_csv(testutil::slurp(testutil::data("kicad/StickHub.holes.csv")));
+  expected.push_back({{148.75, -109.25}, 1.5, "", 0});
+  expected.push_back({{151.25, -109.25}, 1.5, "", 0});
+  const std::string opts = " --origin drawing --drills 0.3,0.4 --end-mill 1.0 --slots mill";
+  for (const char* dialect : {"linuxcnc", "grbl"}) {
+    const std::string nc = t / (std::string(dialect) + ".nc");
+    auto r = testutil::acodrill_run("plan " + testutil::shell_quote(drl) + " -o " + testutil::shell_quote(nc) +
+                                    " -q --iterations 20 --machine router --dialect " + dialect + opts);
+    ASSERT_EQ(r.code, 0) << r.err;
+    const std::string prog = testutil::slurp(nc);
+    if (std::string(dialect) == "grbl") EXPECT_EQ(grbl_refusal(prog), "");
+    const Canon canon = run_rs274(nc);
+    check_made(canon, expected, tool_diameters(prog), parse_owned_drills("0.3,0.4", "t"), 1.0, 1.6, std::string("slot ") + dialect);
+    auto v = testutil::acodrill_run("verify " + testutil::shell_quote(nc) + " --holes " + testutil::shell_quote(drl) + " -q" + opts);
+    EXPECT_EQ(v.code, 0) << v.out;
+  }
+  // Milling slots needs the end mill, narrower than the slot.
+  auto no_mill = testutil::acodrill_run("plan " + testutil::shell_quote(drl) + " -o " + testutil::shell_quote(t / "x.nc") +
+                                        " -q --machine router --drills 0.3,0.4 --slots mill");
+  EXPECT_EQ(no_mill.code, 2);
+  EXPECT_THAT(no_mill.err, ::testing::HasSubstr("--end-mill"));
+  auto wide = testutil::acodrill_run("plan " + testutil::shell_quote(drl) + " -o " + testutil::shell_quote(t / "x.nc") +
+                                     " -q --machine router --drills 0.3,0.4 --end-mill 1.5 --slots mill");
+  EXPECT_EQ(wide.code, 2);
+  EXPECT_EQ(testutil::count_lines(wide.err), 1) << wide.err;
+  EXPECT_FALSE(std::filesystem::exists(t / "x.nc"));
+}
 
 TEST(owned_tools, a_hole_nothing_can_make_is_refused_naming_it_and_nothing_is_written) {
   testutil::TempDir t;

@@ -115,7 +115,8 @@ void add_input_options(CLI::App* cmd, InputArgs& a) {
   cmd->add_option("--slots", a.slots,
                   "drill (default of plan and verify): each slot (Excellon G85 or routed oval, Gerber obround) becomes a row of holes of "
                   "its width, ends first then midpoints so the drill never cuts into one fresh hole alone; skip: "
-                  "not drilled, and named in the program header, report and setup sheet (default of holes, which lists what the input holds)");
+                  "not drilled, and named in the program header, report and setup sheet (default of holes, which lists what the input holds); "
+                  "mill (plan and verify, with --end-mill): milled along its length by the end mill, round its ends");
   cmd->add_option("--slot-pitch", a.slot_pitch, "Distance between a drilled slot's holes in mm (default: a quarter of its width)")
       ->check(CLI::Range(0.0, 1e4));
   cmd->add_option("--apertures", a.apertures,
@@ -141,7 +142,8 @@ app::InputOptions to_input_options(const InputArgs& a) {
   }
   if (a.slots == "drill") o.slots.policy = formats::SlotPolicy::Drill;
   else if (a.slots == "skip") o.slots.policy = formats::SlotPolicy::Skip;
-  else throw app::UserError("--slots must be drill or skip (got \"" + a.slots + "\")");
+  else if (a.slots == "mill") o.slots.policy = formats::SlotPolicy::Mill;
+  else throw app::UserError("--slots must be drill, skip or mill (got \"" + a.slots + "\")");
   o.slots.pitch_mm = a.slot_pitch;
   if (!a.apertures.empty()) {
     o.aperture_list = app::read_file(a.apertures);
@@ -247,6 +249,7 @@ void print_warnings(const app::LoadedHoles& loaded, const std::string& path, boo
   if (loaded.slots_drilled) {
     summary += ", " + std::to_string(loaded.slots_drilled) + " slot(s) drilled as " + std::to_string(loaded.slot_holes) + " holes";
   }
+  if (loaded.slots_milled) summary += ", " + std::to_string(loaded.slots_milled) + " slot(s) milled along their length";
   if (!loaded.skipped.empty()) {
     const app::Note& n = loaded.skipped.front();
     summary += std::string("; ") + skipped_label + ": " + std::to_string(loaded.skipped.size()) + " feature(s), first: " +
@@ -304,6 +307,7 @@ planning::Machine load_machine(const std::string& name_or_path) {
 
 int cmd_holes(const std::string& input, const InputArgs& in_args, const std::string& format, bool quiet) {
   if (format != "csv") throw app::UserError("--format must be csv");
+  if (in_args.slots == "mill") throw app::UserError("--slots mill is for plan and verify; holes lists what the input holds");
   app::LoadedHoles loaded = app::load_holes(input, to_input_options(in_args));
   if (loaded.program) {
     // The listing has each position once, as for every other format.
@@ -661,6 +665,9 @@ int cmd_plan(const PlanArgs& a, const SolverArgs& s, const InputArgs& in_args) {
   if (copies > 1) {
     ps.header_comments.push_back("PANEL: " + std::to_string(copies) + " COPIES OF " + std::to_string(loaded.holes.size() / copies) +
                                  " HOLES, EACH TOOL ACROSS THE WHOLE PANEL");
+  }
+  if (loaded.slots_milled) {
+    ps.header_comments.push_back("SLOTS: " + std::to_string(loaded.slots_milled) + " MILLED ALONG THEIR LENGTH BY THE END MILL");
   }
   if (loaded.slots_drilled) {
     ps.header_comments.push_back("SLOTS: " + std::to_string(loaded.slots_drilled) + " DRILLED AS " +

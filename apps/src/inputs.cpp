@@ -65,6 +65,7 @@ Job load_job(const std::vector<std::string>& paths, const InputOptions& options)
     all.duplicates_removed += part.duplicates_removed;
     all.skipped_by_filter += part.skipped_by_filter;
     all.slots_drilled += part.slots_drilled;
+    all.slots_milled += part.slots_milled;
     all.slot_holes += part.slot_holes;
     job.sources.push_back({paths[k], part.holes.size()});
     stems.push_back(part.name);

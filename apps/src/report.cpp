@@ -93,7 +93,7 @@ std::string report_json(const aco::HoleSet& holes, const PlanResult& plan, const
                     {"y_min", round6(pl.extent.y_min)},
                     {"y_max", round6(pl.extent.y_max)}};
   if (ctx.input) {
-    j["slots"] = {{"drilled", ctx.input->slots_drilled}, {"holes", ctx.input->slot_holes}};
+    j["slots"] = {{"drilled", ctx.input->slots_drilled}, {"holes", ctx.input->slot_holes}, {"milled", ctx.input->slots_milled}};
     nlohmann::ordered_json skipped = nlohmann::ordered_json::array();
     for (const formats::Note& n : ctx.input->skipped) skipped.push_back({{"line", n.line}, {"what", n.message}});
     j["not_drilled"] = skipped;

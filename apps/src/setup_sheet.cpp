@@ -75,8 +75,11 @@ std::string setup_sheet_html(const aco::HoleSet& holes, const PlanResult& plan, 
     << len(e.width()) << " x " << len(e.height()) << " " << unit << "). Z0 is the top of the part; R plane Z"
     << len(ps.r_plane_mm) << ", initial plane Z" << len(ps.initial_z_mm) << " " << unit << ".</div>\n";
 
-  if (ctx.input && (ctx.input->slots_drilled || !ctx.input->skipped.empty())) {
+  if (ctx.input && (ctx.input->slots_drilled || ctx.input->slots_milled || !ctx.input->skipped.empty())) {
     h << "<h2>Slots and features not drilled</h2>\n<ul>\n";
+    if (ctx.input->slots_milled) {
+      h << "<li>" << ctx.input->slots_milled << " slot(s) milled along their length by the end mill.</li>\n";
+    }
     if (ctx.input->slots_drilled) {
       h << "<li>" << ctx.input->slots_drilled << " slot(s) drilled as rows of " << ctx.input->slot_holes
         << " overlapping holes, ends first.</li>\n";

@@ -89,6 +89,21 @@ void apply_slot_policy(LoadedHoles& loaded, const SlotOptions& options, const st
       continue;
     }
     ++chain;
+    if (options.policy == SlotPolicy::Mill && aco::euclidean(slot.from, slot.to) > 1e-6) {
+      ++loaded.slots_milled;
+      // Its two ends, in order: the plan mills the slot between them.
+      for (aco::Point2 p : {slot.from, slot.to}) {
+        aco::Hole h;
+        h.center = p;
+        h.diameter = slot.width_mm;
+        h.layer = slot.layer;
+        h.source_line = slot.source_line;
+        h.chain = chain;
+        h.slot_end = true;
+        loaded.holes.push_back(std::move(h));
+      }
+      continue;
+    }
     ++loaded.slots_drilled;
     // Count before making them: a long slot at a fine pitch must not exhaust memory.
     const double pitch = options.pitch_mm > 0 ? options.pitch_mm : slot.width_mm / 4;

@@ -155,6 +155,7 @@ struct OpenHole {
   double feed_start_z = 0.0;
   bool out = false;                // back at or above the feed start: later Z moves are travel
   std::vector<ZMove> trailing;     // moves after it came out, kept if it goes down again here
+  std::vector<std::size_t> cut;    // milled: every hole this cut makes (a slot's two ends), indices in the run
 };
 
 class Reader {
@@ -529,6 +530,15 @@ class Reader {
       std::optional<double> low = z_ ? z_ : z_homed_ ? std::optional<double>(kAtHome) : std::nullopt;
       if (low && nz) low = std::min(*low, *nz);
       const bool above = low && (*low > kTiny || (feed_start_z_ && *low >= *feed_start_z_ - kTiny));
+      if (!above && hole_.open && !hole_.out && out_.runs[hole_.run].holes[hole_.index].milled_radius_mm) {
+        // Inside a hole being milled (along a slot, to the centre): the cut goes on.
+        xy_ = to;
+        if (nz) {
+          hole_move({ZMove::Feed, *nz, feed_, "", 0.0});
+          z_ = nz;
+        }
+        return;
+      }
       if (!above) {
         if (options_.drilling_only) {
           refuse("G1 moves in X/Y at Z" + (z_ ? format_number(*z_, 3) : std::string(" unknown")) +
@@ -618,13 +628,29 @@ class Reader {
     const double radius = std::hypot(ij.x, ij.y);
     bool helix = false;
     if (hole_.open && !hole_.out && radius > kTiny) {
-      ProgramHole& h = out_.runs[hole_.run].holes[hole_.index];
+      std::vector<ProgramHole>& run = out_.runs[hole_.run].holes;
+      ProgramHole& h = run[hole_.index];
       if (!h.milled_radius_mm) {
         h.milled_radius_mm = radius;
         h.at = centre;
+        hole_.cut = {hole_.index};
         helix = true;
-      } else {
-        helix = aco::euclidean(h.at, centre) <= 1e-3 && std::fabs(*h.milled_radius_mm - radius) <= 1e-3;
+      } else if (std::fabs(*h.milled_radius_mm - radius) <= 1e-3) {
+        // The same cut round another centre (a slot's other end): a hole of its own, once.
+        helix = true;
+        auto same = std::find_if(hole_.cut.begin(), hole_.cut.end(),
+                                 [&](std::size_t k) { return aco::euclidean(run[k].at, centre) <= 1e-3; });
+        if (same != hole_.cut.end()) {
+          hole_.index = *same;
+        } else {
+          ProgramHole other = h;
+          other.at = centre;
+          other.cycle.moves.clear();
+          other.line = other.first_line = other.last_line = lineno_;
+          run.push_back(std::move(other));
+          hole_.index = run.size() - 1;
+          hole_.cut.push_back(hole_.index);
+        }
       }
     }
     if (!helix) {

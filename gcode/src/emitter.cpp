@@ -53,7 +53,9 @@ class Writer {
 
   // The milling moves of one hole (milling.h), the spindle over its start.
   void milled_hole(aco::Point2 start, const std::vector<PathMove>& moves) {
-    const double sx = rounded(to_units(start.x), coord_decimals()), sy = rounded(to_units(start.y), coord_decimals());
+    auto in_units = [&](double mm) { return rounded(to_units(mm), coord_decimals()); };
+    // Where the spindle is, as printed: each arc's I J are from there.
+    double sx = in_units(start.x), sy = in_units(start.y);
     for (const PathMove& m : moves) {
       if (m.kind == PathMove::Rapid) {
         line("G00 Z" + c(*m.z));
@@ -64,9 +66,11 @@ class Writer {
       if (m.y) text += " Y" + c(*m.y);
       if (m.kind == PathMove::ArcCw) {
         // I J from the start as printed: the arc's centre is the hole's to the last digit.
-        const double cx = rounded(to_units(m.centre.x), coord_decimals()), cy = rounded(to_units(m.centre.y), coord_decimals());
-        text += " I" + format_number(cx - sx, coord_decimals()) + " J" + format_number(cy - sy, coord_decimals());
+        text += " I" + format_number(in_units(m.centre.x) - sx, coord_decimals()) + " J" +
+                format_number(in_units(m.centre.y) - sy, coord_decimals());
       }
+      if (m.x) sx = in_units(*m.x);
+      if (m.y) sy = in_units(*m.y);
       if (m.z) text += " Z" + c(*m.z);
       line(text + " F" + f(m.feed_mm_min));
     }
@@ -217,6 +221,16 @@ void write_hobby_program(std::ostream& out, const std::vector<ToolPass>& passes,
         const bool clear = i < p.clear_after.size() && p.clear_after[i];
         const double retract = !s.retract_to_r || last || clear ? s.initial_z_mm : s.r_plane_mm;
         const double d = i < p.mill_diameter.size() ? p.mill_diameter[i] : t.diameter_mm;
+        if (i + 1 < p.slot_to_next.size() && p.slot_to_next[i]) {
+          const aco::Point2 a = p.holes[i], b = p.holes[i + 1];
+          const bool at_end = i + 2 == p.holes.size();
+          const double slot_retract = !s.retract_to_r || at_end || (i + 1 < p.clear_after.size() && p.clear_after[i + 1]) ? s.initial_z_mm
+                                                                                                               : s.r_plane_mm;
+          w.comment("HOLES " + std::to_string(p.index[i]) + "-" + std::to_string(p.index[i + 1]) + " A SLOT " + format_number(d, 3) + " WIDE, MILLED");
+          w.milled_hole(milled_slot_start(a, b, d, t), milled_slot_moves(a, b, d, t, s.r_plane_mm, slot_retract), s.r_plane_mm);
+          ++i;
+          continue;
+        }
         w.comment("HOLE " + std::to_string(p.index[i]) + " MILLED D" + format_number(d, 3));
         w.milled_hole(milled_hole_start(p.holes[i], d, t), milled_hole_moves(p.holes[i], d, t, s.r_plane_mm, retract),
                       s.r_plane_mm);
@@ -303,6 +317,18 @@ void write_program(std::ostream& out, const std::vector<ToolPass>& passes, const
         const bool clear = i < p.clear_after.size() && p.clear_after[i];
         const double retract = !s.retract_to_r || last || clear ? s.initial_z_mm : s.r_plane_mm;
         const double d = p.mill_diameter.at(i);
+        if (i + 1 < p.slot_to_next.size() && p.slot_to_next[i]) {
+          const aco::Point2 a = p.holes[i], b = p.holes[i + 1];
+          const bool at_end = i + 2 == p.holes.size();
+          const double slot_retract = !s.retract_to_r || at_end || (i + 1 < p.clear_after.size() && p.clear_after[i + 1]) ? s.initial_z_mm
+                                                                                                               : s.r_plane_mm;
+          const aco::Point2 start = milled_slot_start(a, b, d, t);
+          w.line(w.label(p.index[i]) + "G00 X" + w.c(start.x) + " Y" + w.c(start.y) + w.trailing_label(p.index[i]) +
+                 " (HOLES " + std::to_string(p.index[i]) + "-" + std::to_string(p.index[i + 1]) + ": A SLOT " + w.c(d) + " WIDE, MILLED)");
+          w.milled_hole(start, milled_slot_moves(a, b, d, t, s.r_plane_mm, slot_retract));
+          ++i;
+          continue;
+        }
         const aco::Point2 start = milled_hole_start(p.holes[i], d, t);
         w.line(w.label(p.index[i]) + "G00 X" + w.c(start.x) + " Y" + w.c(start.y) + w.trailing_label(p.index[i]) +
                " (MILLED D" + w.c(d) + ")");

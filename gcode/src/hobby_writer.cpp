@@ -159,8 +159,9 @@ void HobbyWriter::hole(aco::Point2 at, const std::vector<ZMove>& moves, double t
 
 void HobbyWriter::milled_hole(aco::Point2 start, const std::vector<PathMove>& moves, double travel_z_mm) {
   hole(start, {}, travel_z_mm);
-  const double sx = rounded(inch_ ? start.x / kMmPerInch : start.x, decimals_);
-  const double sy = rounded(inch_ ? start.y / kMmPerInch : start.y, decimals_);
+  auto in_units = [&](double mm) { return rounded(inch_ ? mm / kMmPerInch : mm, decimals_); };
+  // Where the spindle is, as printed: each arc's I J are from there.
+  double sx = in_units(start.x), sy = in_units(start.y);
   for (const PathMove& m : moves) {
     if (m.kind == PathMove::Rapid) {
       rapid_z(*m.z);
@@ -171,10 +172,10 @@ void HobbyWriter::milled_hole(aco::Point2 start, const std::vector<PathMove>& mo
     if (m.y) text += " Y" + n(*m.y);
     if (m.kind == PathMove::ArcCw) {
       // I J from the start as printed: the arc's centre is the hole's to the last digit.
-      const double cx = rounded(inch_ ? m.centre.x / kMmPerInch : m.centre.x, decimals_);
-      const double cy = rounded(inch_ ? m.centre.y / kMmPerInch : m.centre.y, decimals_);
-      text += " I" + format_number(cx - sx, decimals_) + " J" + format_number(cy - sy, decimals_);
+      text += " I" + format_number(in_units(m.centre.x) - sx, decimals_) + " J" + format_number(in_units(m.centre.y) - sy, decimals_);
     }
+    if (m.x) sx = in_units(*m.x);
+    if (m.y) sy = in_units(*m.y);
     if (m.z) {
       text += " Z" + n(*m.z);
       z_ = *m.z;

@@ -31,6 +31,16 @@ aco::Point2 milled_hole_start(aco::Point2 centre, double hole_diameter_mm, const
 std::vector<PathMove> milled_hole_moves(aco::Point2 centre, double hole_diameter_mm, const Tool& end_mill,
                                         double r_plane_mm, double retract_z_mm);
 
+// A slot `width_mm` wide from `a` to `b` milled along its length: a
+// racetrack about the segment (clockwise, like the helix: round a, along one
+// side, round b, back along the other), ramped down lap after lap by at most
+// the tool's pitch, a lap at the depth, a feed to the middle of the segment
+// and out. It starts on the right side at `a` (milled_slot_start); the slot
+// must be wider than the end mill.
+aco::Point2 milled_slot_start(aco::Point2 a, aco::Point2 b, double width_mm, const Tool& end_mill);
+std::vector<PathMove> milled_slot_moves(aco::Point2 a, aco::Point2 b, double width_mm, const Tool& end_mill,
+                                        double r_plane_mm, double retract_z_mm);
+
 // The decimals of a length in program units and a value rounded to them, so
 // that I and J are computed from the numbers as printed.
 inline double rounded(double value, int decimals) {

@@ -83,6 +83,7 @@ RouteStats route_stats(const aco::HoleSet& holes, const std::vector<ToolGroup>& 
     if (waits_for_spindle) spend(split.pauses_s, m.spindle_start_s);
     // Down from Z home to the initial plane, once per tool (approximate Z home as 100 mm up).
     spend(split.moves_s, rapid_time_s(100.0, m.rapid_z_mm_min, m.accel_mm_s2));
+    bool slot_timed = false;  // the hole before was a milled slot's first end
     for (std::size_t i = 0; i < order.size(); ++i) {
       const aco::Point2 p = holes[order[i]].center;
       st.travel_mm += aco::euclidean(at, p);
@@ -91,9 +92,23 @@ RouteStats route_stats(const aco::HoleSet& holes, const std::vector<ToolGroup>& 
       const bool clear = !last && crosses_clamp(p, holes[order[i + 1]].center, m);
       const gcode::Tool& tool = groups[g].tool;
       const bool retract_initial = !s.retract_to_r || last || clear;
-      spend(split.drilling_s, tool.end_mill ? milled_time_s(tool, holes[order[i]].diameter, s, m, retract_initial)
-                              : m.hit_s > 0 ? m.hit_s
-                                            : cycle_time_s(tool, s, m, retract_initial));
+      const aco::Hole& h = holes[order[i]];
+      if (tool.end_mill && h.slot_end) {
+        // A milled slot: its two ends follow each other; the whole slot is timed at the first.
+        const bool second = i > 0 && slot_timed && holes[order[i - 1]].slot_end && holes[order[i - 1]].chain == h.chain;
+        const bool first = !second;
+        slot_timed = first;
+        if (first && i + 1 < order.size()) {
+          const aco::Point2 b = holes[order[i + 1]].center;
+          spend(split.drilling_s, (s.r_plane_mm + gcode::milled_slot_length_mm(h.center, b, h.diameter, tool)) / tool.feed_mm_min * 60.0 +
+                                      rapid_time_s(s.r_plane_mm - tool.depth_mm, m.rapid_z_mm_min, m.accel_mm_s2));
+        }
+      } else {
+        slot_timed = false;
+        spend(split.drilling_s, tool.end_mill ? milled_time_s(tool, h.diameter, s, m, retract_initial)
+                                : m.hit_s > 0 ? m.hit_s
+                                              : cycle_time_s(tool, s, m, retract_initial));
+      }
       if (i == 0) spend(split.moves_s, rapid_time_s(s.initial_z_mm - s.r_plane_mm, m.rapid_z_mm_min, m.accel_mm_s2));
       at = p;
     }
@@ -355,6 +370,17 @@ PlanResult plan_job(const aco::HoleSet& holes, const PlanOptions& options, const
   for (std::size_t i = 0; i < holes.size(); ++i) {
     const double d = holes[i].diameter;
     std::size_t chosen = table.entries.size();
+    if (holes[i].slot_end) {
+      // A slot milled along its length: the end mill's, whatever else fits its width.
+      for (std::size_t t = 0; t < table.entries.size() && chosen == table.entries.size(); ++t) {
+        if (table.entries[t].tool.end_mill) chosen = t;
+      }
+      if (chosen == table.entries.size()) {
+        throw UserError(source, holes[i].source_line, "--slots mill mills slots with the end mill: give --end-mill DIA");
+      }
+      result.groups[chosen].input_order.push_back(static_cast<aco::HoleIndex>(i));
+      continue;
+    }
     for (std::size_t t = 0; t < table.entries.size(); ++t) {
       if (table.entries[t].source >= 0 && static_cast<std::uint32_t>(table.entries[t].source) != options.hole_source[i]) continue;
       if (table.entries[t].takes(d)) {
@@ -426,6 +452,17 @@ std::vector<gcode::ToolPass> to_passes(const aco::HoleSet& holes, const PlanResu
       pass.holes.push_back(holes[h].center);
       pass.index.push_back(++index);
       if (g.tool.end_mill) pass.mill_diameter.push_back(holes[h].diameter);
+    }
+    // A milled slot's two ends follow each other (a chain keeps its order): milled as one.
+    if (g.tool.end_mill) {
+      pass.slot_to_next.assign(pass.holes.size(), false);
+      for (std::size_t i = 0; i + 1 < g.optimized.size();) {
+        const aco::Hole& a = holes[g.optimized[i]];
+        const aco::Hole& b = holes[g.optimized[i + 1]];
+        const bool pair = a.slot_end && b.slot_end && a.chain == b.chain;
+        if (pair) pass.slot_to_next[i] = true;
+        i += pair ? 2 : 1;
+      }
     }
     if (!machine.clamps.empty()) {
       pass.clear_after.assign(pass.holes.size(), false);

@@ -183,7 +183,8 @@ bool ToolTableEntry::takes(double hole_mm) const {
 ToolTable owned_tool_table(const aco::HoleSet& holes, const Tooling& tooling, Material material, double thickness_mm,
                            const Machine& machine, const std::string& source, std::vector<DrillMapping>& mapping) {
   std::map<long long, std::size_t> count;  // designed diameter (µm) → holes
-  for (const aco::Hole& h : holes) ++count[std::llround(h.diameter * 1000.0)];
+  std::map<long long, std::size_t> slots;  // milled slots' widths (µm) → slots
+  for (const aco::Hole& h : holes) ++(h.slot_end ? slots : count)[std::llround(h.diameter * 1000.0)];
   std::vector<std::pair<double, std::size_t>> diameters;
   for (const auto& [k, n] : count) diameters.push_back({static_cast<double>(k) / 1000.0, n});
   const std::vector<DiameterChoice> choices = choose_drills(diameters, tooling, source);
@@ -200,7 +201,10 @@ ToolTable owned_tool_table(const aco::HoleSet& holes, const Tooling& tooling, Ma
     e.tool.number = static_cast<int>(t.entries.size()) + 1;
     t.entries.push_back(e);
   }
-  const bool milled = std::any_of(choices.begin(), choices.end(), [](const DiameterChoice& c) { return !c.drill; });
+  const bool milled = !slots.empty() || std::any_of(choices.begin(), choices.end(), [](const DiameterChoice& c) { return !c.drill; });
+  if (!slots.empty() && !tooling.end_mill_mm) {
+    throw UserError(source, 0, "--slots mill mills slots with the end mill: give --end-mill DIA");
+  }
   if (milled) {
     ToolTableEntry e;
     e.tool = generated_end_mill(*tooling.end_mill_mm, material, thickness_mm, machine);
@@ -211,7 +215,15 @@ ToolTable owned_tool_table(const aco::HoleSet& holes, const Tooling& tooling, Ma
   for (const DiameterChoice& c : choices) {
     ToolTableEntry& e = c.drill ? t.entries[entry_of_drill.at(*c.drill)] : t.entries.back();
     e.takes_mm.push_back(c.designed_mm);
-    mapping.push_back({c.designed_mm, c.holes, e.tool.number, e.tool.diameter_mm, !c.drill});
+    mapping.push_back({c.designed_mm, c.holes, e.tool.number, e.tool.diameter_mm, !c.drill, false});
+  }
+  for (const auto& [k, n] : slots) {
+    const double width = static_cast<double>(k) / 1000.0;
+    if (width < *tooling.end_mill_mm + 2 * gcode::kPlungeRadiusMm) {
+      throw UserError(source, 0, "--slots mill: slots " + gcode::format_number(width, 3) + " mm wide need an end mill narrower than that (this one is " +
+                                     gcode::format_number(*tooling.end_mill_mm, 3) + " mm); --slots drill drills them as rows of holes");
+    }
+    mapping.push_back({width, n / 2, t.entries.back().tool.number, t.entries.back().tool.diameter_mm, true, true});
   }
   return t;
 }

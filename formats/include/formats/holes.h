@@ -40,6 +40,7 @@ struct Slot {
 enum class SlotPolicy {
   Drill,  // a row of holes of the slot's width along it (the default)
   Skip,   // not drilled; named in the program's header, the report and the setup sheet
+  Mill,   // milled by the end mill along its length: its two ends, a chain of holes marked slot_end
 };
 struct SlotOptions {
   SlotPolicy policy = SlotPolicy::Drill;
@@ -73,6 +74,7 @@ struct LoadedHoles {
   std::optional<bool> metric;  // the units the file itself is written in, where it says (Excellon)
   std::vector<Slot> slots;     // as read; parse_holes drills or skips them (SlotOptions)
   std::size_t slots_drilled = 0, slot_holes = 0;  // slots made into rows of holes, and how many holes
+  std::size_t slots_milled = 0;  // slots milled along their length (--slots mill): two holes each, its ends
   // What the input asks for that the program will not do (skipped slots,
   // routed paths): never only a warning on stderr — the program's header,
   // the report and the setup sheet name each one.

@@ -54,6 +54,9 @@ struct ToolPass {
   std::vector<bool> clear_after;
   // An end mill's pass: the diameter each hole is milled to (empty: drilled).
   std::vector<double> mill_diameter;
+  // slot_to_next[i]: holes i and i+1 are the two ends of a slot of width
+  // mill_diameter[i], milled along it as one (empty: none).
+  std::vector<bool> slot_to_next;
 };
 
 struct ProgramSettings {
@@ -76,7 +79,7 @@ struct ProgramSettings {
   // Z is probed on it (G38.2) and set to its thickness, on GRBL, Marlin and
   // LinuxCNC. Probing runs down at most probe_travel_mm at probe_feed_mm_min.
   std::optional<double> probe_plate_mm;
-  double probe_feed_mm_min = 60.0;
+  double probe_feed_mm_min = 100.0;
   double probe_travel_mm = 30.0;
 };
 
@@ -93,6 +96,9 @@ struct Helix {
 // Below this path radius the end mill is plunged straight: the hole is its size.
 constexpr double kPlungeRadiusMm = 0.002;
 Helix helix_for(double hole_diameter_mm, const Tool& end_mill);
+// The cutting length of a slot `width_mm` wide from `a` to `b` milled along
+// its length (its laps down, one at the depth, the way to the middle).
+double milled_slot_length_mm(aco::Point2 a, aco::Point2 b, double width_mm, const Tool& end_mill);
 
 const char* to_string(Dialect d);
 // False for GRBL and Marlin: no canned cycles, no M6, no G43, no G98/G99.

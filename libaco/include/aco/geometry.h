@@ -35,6 +35,9 @@ struct Hole {
   // Nonzero: this hole belongs to a chain (the holes of a drilled slot) that
   // is drilled together and in the order the chain's holes appear in the set.
   std::uint32_t chain = 0;
+  // --slots mill: this hole is one end of a slot (its chain holds both ends,
+  // in order) that the end mill mills along its length; `diameter` is its width.
+  bool slot_end = false;
 };
 
 using HoleSet = std::vector<Hole>;

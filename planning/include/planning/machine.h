@@ -62,7 +62,7 @@ struct Machine {
   // end mill, a touch plate's thickness, and how its probing runs.
   std::string drills_owned;
   std::optional<double> end_mill_mm, probe_plate_mm;
-  double probe_feed_mm_min = 60.0, probe_travel_mm = 30.0;
+  double probe_feed_mm_min = 100.0, probe_travel_mm = 30.0;
 };
 
 // True when the straight move a → b passes over any clamp of the machine.

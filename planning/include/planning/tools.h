@@ -40,6 +40,7 @@ struct DrillMapping {
   int tool = 0;              // its tool number
   double tool_mm = 0.0;      // the drill's or the end mill's diameter
   bool milled = false;       // by a helix (or plunged, when the end mill is its size)
+  bool slots = false;        // slots of this width milled along their length (`holes`: how many slots)
 };
 
 struct ToolTable {
