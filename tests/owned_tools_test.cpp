@@ -322,9 +322,13 @@ TEST_P(OwnedToolsOnBoards, the_router_drills_with_owned_drills_and_mills_the_res
                                     " --dialect " + dialect + " --report " + testutil::shell_quote(t / "r.json"));
     ASSERT_EQ(r.code, 0) << what << ": " << r.err;
     const std::string prog = testutil::slurp(nc);
-    if (std::string(dialect) == "grbl") EXPECT_EQ(grbl_refusal(prog), "") << what;
+    if (std::string(dialect) == "grbl") {
+      EXPECT_EQ(grbl_refusal(prog), "") << what;
+    }
     if (std::string(dialect) == "marlin") {
-      if (prog.find("\nG2 ") != std::string::npos) EXPECT_NE(prog.find("ARC_SUPPORT"), std::string::npos) << what;
+      if (prog.find("\nG2 ") != std::string::npos) {
+        EXPECT_NE(prog.find("ARC_SUPPORT"), std::string::npos) << what;
+      }
       EXPECT_EQ(prog.find('('), std::string::npos) << what << ": Marlin reads ';' comments only";
     }
     if (std::string(dialect) != "marlin") {
@@ -374,7 +378,9 @@ TEST(owned_tools, a_slot_is_milled_along_its_length_round_both_ends) {
                                     " -q --iterations 20 --machine router --dialect " + dialect + opts);
     ASSERT_EQ(r.code, 0) << r.err;
     const std::string prog = testutil::slurp(nc);
-    if (std::string(dialect) == "grbl") EXPECT_EQ(grbl_refusal(prog), "");
+    if (std::string(dialect) == "grbl") {
+      EXPECT_EQ(grbl_refusal(prog), "");
+    }
     const Canon canon = run_rs274(nc);
     check_made(canon, expected, tool_diameters(prog), parse_owned_drills("0.3,0.4", "t"), 1.0, 1.6, std::string("slot ") + dialect);
     auto v = testutil::acodrill_run("verify " + testutil::shell_quote(nc) + " --holes " + testutil::shell_quote(drl) + " -q" + opts);
@@ -473,7 +479,9 @@ TEST(owned_tools, a_touch_plate_is_probed_after_every_tool_change_and_refused_wh
     for (std::size_t at = prog.find("\nG91 G38.2"); at != std::string::npos; at = prog.find("\nG91 G38.2", at + 1)) ++probes;
     EXPECT_EQ(probes, 5u) << dialect << ": one probe per tool";
     EXPECT_THAT(prog, ::testing::HasSubstr(std::string(dialect) == "marlin" ? "G92 Z0.500" : "G10 L20 P0 Z0.500"));
-    if (std::string(dialect) == "grbl") EXPECT_EQ(grbl_refusal(prog), "");
+    if (std::string(dialect) == "grbl") {
+      EXPECT_EQ(grbl_refusal(prog), "");
+    }
     if (std::string(dialect) == "linuxcnc") {
       const Canon canon = run_rs274(nc);
       EXPECT_EQ(canon.probes.size(), 5u);

@@ -595,7 +595,7 @@ class Reader {
         h.last_line = lineno_;
         h.cycle.moves = approach_;
         run.holes.push_back(std::move(h));
-        hole_ = OpenHole{true, out_.runs.size() - 1, run.holes.size() - 1, *z_, false, {}};
+        hole_ = OpenHole{true, out_.runs.size() - 1, run.holes.size() - 1, *z_, false, {}, {}};
         feed_start_z_ = *z_;
         approach_.clear();
       }
