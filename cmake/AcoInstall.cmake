@@ -7,7 +7,7 @@ include(CMakePackageConfigHelpers)
 
 set(ACO_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/acodrill)
 
-install(TARGETS acodrill acobench RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+install(TARGETS acodrill acobench acodrill-linuxcnc-filter RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(TARGETS aco_geometry aco aco_dxf aco_gcode aco_formats aco_planning
         EXPORT acodrillTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
@@ -28,12 +28,15 @@ install(FILES ${PROJECT_BINARY_DIR}/acodrillConfig.cmake ${PROJECT_BINARY_DIR}/a
 find_program(ACO_HELP2MAN help2man)
 if(ACO_HELP2MAN)
   set(man_pages)
-  foreach(prog acodrill acobench)
+  foreach(prog acodrill acobench acodrill-linuxcnc-filter)
     set(page ${PROJECT_BINARY_DIR}/man/${prog}.1)
     set(gz ${page}.gz)
     if(prog STREQUAL "acodrill")
       set(what "order drill holes for the shortest spindle travel and write the G-code")
       set(help_option --help-option=--help-all)  # every command's options, not only the list of commands
+    elseif(prog STREQUAL "acodrill-linuxcnc-filter")
+      set(help_option --help-option=--help)
+      set(what "LinuxCNC filter program: open drill files and DXF in AXIS through acodrill")
     else()
       set(help_option --help-option=--help)
       set(what "benchmark the ant colony over algorithms, parameters and threads")

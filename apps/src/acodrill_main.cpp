@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <memory>
 #include <sstream>
 
 #include "aco/error.h"
@@ -348,6 +349,7 @@ struct PlanArgs {
   bool quiet = false;
   BenchArgs bench;
   std::optional<double> probe_plate;
+  bool filter_progress = false;
 };
 
 // "D0.750 MM, 12 HOLES: T2 0.800 MM DRILL, +0.050 MM": how a designed diameter is made.
@@ -613,7 +615,22 @@ int cmd_plan(const PlanArgs& a, const SolverArgs& s, const InputArgs& in_args) {
   std::string source;  // the job's inputs, as messages and the program's header name them
   for (const std::string& input : a.inputs) source += (source.empty() ? "" : " + ") + (input == "-" ? std::string("<stdin>") : input);
 
-  const bool progress = !a.quiet && ::isatty(STDERR_FILENO);
+  const bool progress = !a.quiet && !a.filter_progress && ::isatty(STDERR_FILENO);
+  if (a.filter_progress) {
+    // LinuxCNC's AXIS moves its progress bar by "FILTER_PROGRESS=N" lines from a filter program.
+    const double limit = s.time_limit;
+    const int iterations = aco::resolve(o.solver, loaded.holes.size()).iterations;
+    // Each tool's colony gets a copy of the callback: the last line printed is shared.
+    auto last = std::make_shared<int>(-1);
+    o.solver.on_iteration = [limit, iterations, last](const aco::Progress& p) {
+      const double done = limit > 0 ? seconds_since_start() / limit : static_cast<double>(p.iteration) / std::max(1, iterations);
+      const int percent = std::clamp(static_cast<int>(100.0 * done), 0, 99);
+      if (percent <= *last) return;
+      *last = percent;
+      std::fprintf(stderr, "FILTER_PROGRESS=%d\n", percent);
+      std::fflush(stderr);
+    };
+  }
   if (progress) {
     o.solver.on_iteration = [](const aco::Progress& p) {
       if (p.wall_s < 1.0) return;
@@ -919,6 +936,9 @@ int main(int argc, char** argv) {
                        "probe_plate_mm; refused for HAAS and Fanuc)")
       ->check(CLI::Range(0.01, 50.0));
   add_bench_options(plan_cmd, plan.bench);
+  plan_cmd->add_flag("--filter-progress", plan.filter_progress,
+                     "Print the progress as FILTER_PROGRESS=N lines (N percent) on stderr, as LinuxCNC's AXIS reads "
+                     "them from a filter program (acodrill-linuxcnc-filter)");
   plan_cmd->add_flag("-q,--quiet", plan.quiet, "Print nothing on success");
   add_solver_options(plan_cmd, solver);
   add_input_options(plan_cmd, in_args);
