@@ -7,7 +7,11 @@ include(CMakePackageConfigHelpers)
 
 set(ACO_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/acodrill)
 
-install(TARGETS acodrill acobench acodrill-linuxcnc-filter RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+set(ACO_PROGRAMS acodrill acobench)
+if(NOT WIN32)
+  list(APPEND ACO_PROGRAMS acodrill-linuxcnc-filter)
+endif()
+install(TARGETS ${ACO_PROGRAMS} RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(TARGETS aco_geometry aco aco_dxf aco_gcode aco_formats aco_planning
         EXPORT acodrillTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
@@ -26,9 +30,9 @@ install(FILES ${PROJECT_BINARY_DIR}/acodrillConfig.cmake ${PROJECT_BINARY_DIR}/a
 # Man pages made from the programs' own --help by help2man (Debian), so they
 # never drift from the options; skipped with a note where help2man is missing.
 find_program(ACO_HELP2MAN help2man)
-if(ACO_HELP2MAN)
+if(ACO_HELP2MAN AND NOT CMAKE_CROSSCOMPILING)
   set(man_pages)
-  foreach(prog acodrill acobench acodrill-linuxcnc-filter)
+  foreach(prog ${ACO_PROGRAMS})
     set(page ${PROJECT_BINARY_DIR}/man/${prog}.1)
     set(gz ${page}.gz)
     if(prog STREQUAL "acodrill")

@@ -1,7 +1,12 @@
 #pragma once
 // Helpers shared by the tests: paths, files, and running the built programs.
+#ifndef _WIN32
 #include <sys/wait.h>
+#endif
 #include <unistd.h>
+#ifdef _WIN32
+#include <process.h>
+#endif
 
 #include <algorithm>
 #include <cctype>
@@ -37,8 +42,19 @@ inline void spit(const std::string& path, const std::string& text) {
 class TempDir {
  public:
   TempDir() {
+#ifdef _WIN32
+    // No mkdtemp on Windows: a name of our own, made once.
+    for (unsigned k = 0;; ++k) {
+      const auto p = std::filesystem::temp_directory_path() / ("acodrill-test-" + std::to_string(::_getpid()) + "-" + std::to_string(k));
+      if (std::filesystem::create_directory(p)) {
+        path_ = p.generic_string();
+        break;
+      }
+    }
+#else
     std::string tmpl = (std::filesystem::temp_directory_path() / "acodrill-test-XXXXXX").string();
     path_ = ::mkdtemp(tmpl.data());
+#endif
   }
   ~TempDir() { std::filesystem::remove_all(path_); }
   std::string operator/(const std::string& name) const { return path_ + "/" + name; }
@@ -67,7 +83,11 @@ inline Run run(const std::string& command, const std::string& stdin_text = "") {
   const std::string full = command + " <" + shell_quote(in) + " >" + shell_quote(out) + " 2>" + shell_quote(err);
   int status = std::system(full.c_str());
   Run r;
+#ifdef _WIN32
+  r.code = status;  // Windows' system() gives the exit code itself
+#else
   r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+#endif
   r.out = slurp(out);
   r.err = slurp(err);
   return r;

@@ -1,8 +1,10 @@
 // acobench: sweeps algorithms and their parameters over instances, writes one
 // CSV row per run, a summary per cell, the thesis's tables and SVG charts.
 #include <omp.h>
+#include <unistd.h>  // isatty; MinGW has it too
+#ifndef _WIN32
 #include <sys/wait.h>
-#include <unistd.h>
+#endif
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
@@ -69,6 +71,9 @@ std::vector<std::string> sweep_arguments(int argc, char** argv) {
 // Runs a command; its standard output (its errors go to ours as they come),
 // or a UserError when it fails.
 std::string run_command(const std::string& command) {
+#ifdef _WIN32
+  throw app::UserError("cannot run " + command + ": Slurm's sbatch is not on Windows; write the scripts here and submit them on the cluster");
+#else
   std::string out;
   FILE* p = ::popen(command.c_str(), "r");
   if (!p) throw app::UserError("cannot run " + command);
@@ -80,6 +85,7 @@ std::string run_command(const std::string& command) {
                          "; its message is above)");
   }
   return out;
+#endif
 }
 
 }  // namespace

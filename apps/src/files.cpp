@@ -2,11 +2,18 @@
 
 #include <fcntl.h>
 #include <sys/stat.h>
+#ifdef _WIN32
+#include <windows.h>
+#include <io.h>
+#include <random>
+#else
 #include <unistd.h>
+#endif
 
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <iostream>
 #include <iterator>
 #include <sstream>
@@ -44,8 +51,25 @@ void write_file_atomic(const std::string& path, const std::string& content) {
     if (!std::cout) throw UserError("-", 0, "cannot write to standard output");
     return;
   }
-  std::string dir = ".";
-  if (auto slash = path.rfind('/'); slash != std::string::npos) dir = slash == 0 ? "/" : path.substr(0, slash);
+#ifdef _WIN32
+  // Windows: a temporary file beside the target, then MoveFileEx replacing
+  // it, written through (rename() will not replace an existing file there).
+  std::random_device entropy;
+  const std::string tmp = path + ".tmp-" + std::to_string(entropy()) + std::to_string(::GetCurrentProcessId());
+  FILE* f = std::fopen(tmp.c_str(), "wbx");
+  if (!f) throw UserError(path, 0, std::string("cannot write: ") + std::strerror(errno));
+  const bool written = std::fwrite(content.data(), 1, content.size(), f) == content.size() && std::fflush(f) == 0 &&
+                       ::_commit(::_fileno(f)) == 0;
+  const int err = errno;
+  if (std::fclose(f) != 0 || !written) {
+    std::remove(tmp.c_str());
+    throw UserError(path, 0, std::string("cannot write: ") + std::strerror(written ? errno : err));
+  }
+  if (!::MoveFileExA(tmp.c_str(), path.c_str(), MOVEFILE_REPLACE_EXISTING | MOVEFILE_WRITE_THROUGH)) {
+    std::remove(tmp.c_str());
+    throw UserError(path, 0, "cannot write (Windows error " + std::to_string(::GetLastError()) + ")");
+  }
+#else
   std::string tmp_template = path + ".tmp-XXXXXX";
   std::string tmp = tmp_template;
   int fd = ::mkstemp(tmp.data());
@@ -82,13 +106,20 @@ void write_file_atomic(const std::string& path, const std::string& content) {
     ::unlink(tmp.c_str());
     throw UserError(path, 0, std::string("cannot write: ") + std::strerror(err));
   }
+#endif
 }
 
 bool same_file(const std::string& a, const std::string& b) {
   struct stat sa {}, sb {};
   if (a == "-" || b == "-") return false;
   if (::stat(a.c_str(), &sa) != 0 || ::stat(b.c_str(), &sb) != 0) return false;
+#ifdef _WIN32
+  // No inode numbers on Windows: the same file is the same canonical path.
+  std::error_code ec;
+  return std::filesystem::equivalent(a, b, ec);
+#else
   return sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
+#endif
 }
 
 }  // namespace app

@@ -406,6 +406,43 @@ class Package(unittest.TestCase):
             done = subprocess.run(["/usr/bin/python3", "-c", code], capture_output=True, text=True, cwd=d)
             self.assertIn("[('Drill with acodrill', 'Fabrication')]", done.stdout, done.stdout + done.stderr)
 
+    def test_windows_package_carries_acodrill_and_the_plugin_finds_it_beside_itself(self):
+        # Issue 54: scripts/windows packs acodrill.exe with the plugin; here the
+        # Linux binary stands in for it (the packing and the finding are the same).
+        import jsonschema
+
+        schema = json.loads(read(os.path.join(ROOT, "tests", "data", "kicad", "pcm.v1.schema.json")))
+        with tempfile.TemporaryDirectory() as d:
+            binary = os.path.join(d, "acodrill.exe")
+            shutil.copy(ACODRILL, binary)
+            zpath = os.path.join(d, "win.zip")
+            subprocess.run(["/usr/bin/python3", os.path.join(PLUGIN_DIR, "make_pcm.py"), zpath, "--platform", "windows",
+                            "--binary", binary], check=True)
+            with zipfile.ZipFile(zpath) as archive:
+                contents = {n: archive.read(n) for n in archive.namelist()}
+            self.assertIn("plugins/acodrill.exe", contents)
+            self.assertEqual(contents["plugins/acodrill.exe"], read(ACODRILL, "rb"))
+            meta = json.loads(contents["metadata.json"])
+            jsonschema.validate(meta, schema)
+            self.assertEqual(meta["versions"][0]["platforms"], ["windows"])
+            self.assertNotIn("Debian package", meta["description_full"])
+            # Unpacked as the PCM does, with no acodrill on PATH: the plugin runs the one beside it.
+            folder = os.path.join(d, "plugin")
+            os.makedirs(folder)
+            for n, data in contents.items():
+                if n.startswith("plugins/"):
+                    with open(os.path.join(folder, n[len("plugins/"):]), "wb") as f:
+                        f.write(data)
+            os.chmod(os.path.join(folder, "acodrill.exe"), 0o755)
+            os.makedirs(os.path.join(d, "pkg"))
+            os.symlink(folder, os.path.join(d, "pkg", "acodrill_kicad"))
+            code = ("import sys; sys.path.insert(0, sys.argv[1]); from acodrill_kicad import job\n"
+                    "print(job.find_acodrill('acodrill')); print(dict(job.machine_classes())['router'][:7])\n")
+            done = subprocess.run(["/usr/bin/python3", "-c", code, os.path.join(d, "pkg")], capture_output=True, text=True,
+                                  env={"PATH": os.path.join(d, "empty")})
+            self.assertEqual(done.returncode, 0, done.stderr)
+            self.assertEqual(done.stdout.splitlines(), [os.path.join(d, "pkg", "acodrill_kicad", "acodrill.exe"), "desktop"])
+
 
 if __name__ == "__main__":
     unittest.main(verbosity=2)

@@ -112,8 +112,16 @@ def machine_classes(acodrill: str = "acodrill") -> List[Tuple[str, str]]:
 
 
 def find_acodrill(acodrill: str) -> str:
-    """The acodrill binary: a path as given, or a name found on PATH."""
-    found = acodrill if os.sep in acodrill else shutil.which(acodrill)
+    """The acodrill binary: a path as given, or a name found on PATH, or the
+    one the package carries beside the plugin (KiCad's Windows package)."""
+    found = acodrill if os.sep in acodrill or (os.altsep and os.altsep in acodrill) else shutil.which(acodrill)
+    if not found and acodrill == "acodrill":
+        here = os.path.dirname(os.path.abspath(__file__))
+        for name in ("acodrill.exe", "acodrill"):
+            beside = os.path.join(here, name)
+            if os.path.isfile(beside) and (os.name == "nt" or os.access(beside, os.X_OK)):
+                found = beside
+                break
     if not found or not os.access(found, os.X_OK):
         raise PlanError(f"acodrill: error: {acodrill}: acodrill is not installed or not executable; "
                         "install it (apt install ./acodrill_*.deb) or give --acodrill PATH")

@@ -1,0 +1,92 @@
+#!/usr/bin/env bash
+# Issue 54: acodrill.exe (scripts/windows) under Wine behaves as acodrill does
+# on Linux. It plans a DXF, KiCad's Excellon and Gerber X2 drill files (one
+# with CRLF line ends, one under a path with spaces, given with backslashes)
+# to LinuxCNC programs that the Linux acodrill's verify accepts and LinuxCNC's
+# rs274 reads back to every hole; a bad input is exit 2, one error line and no
+# file, an existing program is replaced whole; and says whether the program
+# is byte-identical to Linux's.
+#   tests/windows/wine_test.sh BUILD_WINDOWS_DIR LINUX_BUILD_DIR
+set -uo pipefail
+win="$1"; linux="$2"
+root=$(cd "$(dirname "$0")/../.." && pwd)
+exe="$win/bin/acodrill.exe"
+acodrill="$linux/bin/acodrill"
+export WINEDEBUG=-all
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+passed=0; failed=0
+ok() { passed=$((passed + 1)); echo "ok: $*"; }
+bad() { failed=$((failed + 1)); echo "FAILED: $*"; }
+# A path as Windows sees the Linux file system (Wine's Z: drive), with backslashes.
+winpath() { echo "Z:$1" | tr '/' '\\'; }
+
+# rs274's holes: downward feeds at one XY (one per hole), in a folder of its own.
+rs274_holes() {
+  local d; d=$(mktemp -d)
+  sed 's/G53 G00 Z0\./G00 Z100./' "$1" > "$d/p.ngc"
+  grep -o 'T[0-9]*' "$1" | sort -u | sed 's/T\([0-9]*\)/T\1 P\1 Z0 D1/' > "$d/tool.tbl"
+  (cd "$d" && rs274 -t tool.tbl -g p.ngc 2>/dev/null) | awk '
+    /STRAIGHT_TRAVERSE|STRAIGHT_FEED/ {
+      s = $0; sub(/.*\(/, "", s); sub(/\).*/, "", s); split(s, v, ", ")
+      if (v[1] != x || v[2] != y) { fresh = 1 }
+      else if ($0 ~ /STRAIGHT_FEED/ && v[3] < z) { if (fresh) n++; fresh = 0 }
+      if ($0 ~ /STRAIGHT_TRAVERSE/ && v[3] > z) fresh = 1
+      x = v[1]; y = v[2]; z = v[3] }
+    END { print n + 0 }'
+  rm -rf "$d"
+}
+
+mkdir -p "$work/a folder with spaces"
+cp "$root/tests/data/kicad/video-mm-decimal.drl" "$work/a folder with spaces/video.drl"
+sed 's/$/\r/' "$root/tests/data/kicad/pic_programmer-inch-decimal.drl" > "$work/pic-crlf.drl"
+gerber=$(ls "$root"/tests/data/real-gerber/kicad/flat_hierarchy/x2_mm46/flat_hierarchy-PTH-drl.gbr)
+cases=(
+  "$root/samples/plate70.dxf|dxf"
+  "$work/a folder with spaces/video.drl|excellon, a path with spaces"
+  "$work/pic-crlf.drl|excellon, CRLF"
+  "$gerber|gerber x2"
+)
+identical=0; differ=0
+for c in "${cases[@]}"; do
+  input="${c%%|*}"; what="${c#*|}"
+  out="$work/out.ngc"; rm -f "$out"
+  opts=(--dialect linuxcnc --iterations 40 --seed 3 --threads 2 --slots skip -q)
+  if ! wine "$exe" plan "$(winpath "$input")" -o "$(winpath "$out")" "${opts[@]}" 2>"$work/err"; then
+    bad "$what: acodrill.exe plan failed: $(cat "$work/err")"; continue
+  fi
+  if "$acodrill" verify "$out" --holes "$input" --slots skip -q >/dev/null; then ok "$what: verify accepts the Windows program"
+  else bad "$what: verify refuses the Windows program"; fi
+  expected=$("$acodrill" holes "$input" --slots skip -q | tail -n +2 | wc -l)
+  got=$(rs274_holes "$out")
+  if [ "$got" = "$expected" ]; then ok "$what: rs274 reads $got holes"; else bad "$what: rs274 reads $got holes, the input has $expected"; fi
+  "$acodrill" plan "$input" -o "$work/linux.ngc" "${opts[@]}"
+  if cmp -s "$out" "$work/linux.ngc"; then identical=$((identical + 1)); else differ=$((differ + 1)); echo "note: $what: not byte-identical to Linux's"; fi
+done
+echo "byte-identical to Linux: $identical of $((identical + differ))"
+
+# A bad input: exit 2, one line on stderr, no file; an existing program stays as it was.
+printf 'M48\nMETRIC\nT1C0.8\n%%\nT1\nX1.0Y\n' > "$work/bad.drl"
+wine "$exe" plan "$(winpath "$work/bad.drl")" -o "$(winpath "$work/bad.ngc")" 2>"$work/err"; code=$?
+lines=$(grep -c . "$work/err")
+if [ "$code" = 2 ] && [ "$lines" = 1 ] && grep -q '^acodrill: error: .*bad.drl:6: ' "$work/err" && [ ! -e "$work/bad.ngc" ]; then
+  ok "bad input: exit 2, one line, no file"
+else bad "bad input: exit $code, $lines line(s): $(cat "$work/err"), file: $(ls "$work/bad.ngc" 2>&1)"; fi
+echo "keep me" > "$work/kept.ngc"
+wine "$exe" plan "$(winpath "$work/bad.drl")" -o "$(winpath "$work/kept.ngc")" 2>/dev/null
+if [ "$(cat "$work/kept.ngc")" = "keep me" ] && [ -z "$(ls "$work" | grep '\.tmp-')" ]; then ok "an existing file is left untouched on error, no temporary left"
+else bad "the existing file was touched or a temporary is left"; fi
+# Written over: the temporary file replaces an existing program whole.
+wine "$exe" plan "$(winpath "$root/samples/plate10.dxf")" -o "$(winpath "$work/kept.ngc")" -q --iterations 5
+if tail -n 2 "$work/kept.ngc" | head -n 1 | grep -q '^M30' && [ -z "$(ls "$work" | grep '\.tmp-')" ]; then ok "an existing program is replaced by the new one"
+else bad "the program was not replaced: $(head -c 100 "$work/kept.ngc")"; fi
+# Usage errors and --help.
+wine "$exe" plan 2>"$work/err" >/dev/null; code=$?
+if [ "$code" = 2 ] && [ "$(grep -c . "$work/err")" = 1 ]; then ok "usage error: exit 2, one line"; else bad "usage error: exit $code"; fi
+if wine "$exe" --help | grep -q "acodrill plan"; then ok "--help"; else bad "--help"; fi
+if wine "$win/bin/acobench.exe" --instances "$(winpath "$root/tests/data/tsplib/d198.tsp")" --iterations 5 --seeds 1 --threads 1 \
+     --out "$(winpath "$work/runs.csv")" >/dev/null 2>&1 && grep -q '^instance,' "$work/runs.csv"; then ok "acobench.exe runs a sweep"
+else bad "acobench.exe"; fi
+
+echo "wine: $passed passed, $failed failed"
+[ "$failed" = 0 ]
