@@ -2,6 +2,10 @@
 // CSV row per run, a summary per cell, the thesis's tables and SVG charts.
 #include <omp.h>
 #include <unistd.h>  // isatty; MinGW has it too
+#ifdef _WIN32
+#include <fcntl.h>
+#include <io.h>
+#endif
 #ifndef _WIN32
 #include <sys/wait.h>
 #endif
@@ -91,6 +95,9 @@ std::string run_command(const std::string& command) {
 }  // namespace
 
 int main(int argc, char** argv) {
+#ifdef _WIN32
+  ::_setmode(::_fileno(stdout), _O_BINARY);  // output as in a file: LF, not CRLF
+#endif
   CLI::App cli{"acobench runs a grid of solver settings over instances: every combination of the listed values, "
                "each with seeds 1..N, one CSV row per run.\n\n"
                "Examples:\n"

@@ -4,6 +4,10 @@
 // and generated --help in a few lines each, where hand-written parsing would
 // be a few hundred lines of error-prone code.
 #include <unistd.h>
+#ifdef _WIN32
+#include <fcntl.h>
+#include <io.h>
+#endif
 
 #include <CLI/CLI.hpp>
 #include <chrono>
@@ -370,7 +374,7 @@ int finish_plan(const PlanArgs& a, const std::string& program_text, const aco::H
   const app::LoadedHoles& loaded = *ctx.input;
   const planning::Placement& placement = ctx.placement;
   const std::size_t n_tools = plan.groups.size();
-  const std::string source_name = ctx.source.substr(ctx.source.find_last_of('/') == std::string::npos ? 0 : ctx.source.find_last_of('/') + 1);
+  const std::string source_name = formats::file_name(ctx.source);
   // Everything is computed; now write, each file complete or not at all.
   app::write_file_atomic(a.output, program_text);
   if (!a.report.empty()) app::write_file_atomic(a.report, app::report_json(holes, plan, ctx));
@@ -506,7 +510,7 @@ int plan_program(const PlanArgs& a, planning::PlanOptions o, const app::LoadedHo
   planning::check_travel(loaded.holes, o.machine, source);  // before the colony's work, not after
   planning::ReorderResult r = planning::reorder_program(input, o, ro);
 
-  const std::string source_name = source.substr(source.find_last_of('/') == std::string::npos ? 0 : source.find_last_of('/') + 1);
+  const std::string source_name = formats::file_name(source);
   gcode::DrillingWriteSettings ws;
   ws.dialect = o.program.dialect;
   ws.inch = inch;
@@ -639,7 +643,7 @@ int cmd_plan(const PlanArgs& a, const SolverArgs& s, const InputArgs& in_args) {
   }
   std::string source_name;
   for (const std::string& input : a.inputs) {
-    source_name += (source_name.empty() ? "" : " + ") + input.substr(input.find_last_of('/') == std::string::npos ? 0 : input.find_last_of('/') + 1);
+    source_name += (source_name.empty() ? "" : " + ") + formats::file_name(input);
   }
   // A panel: every copy of the board, in drawing coordinates, before program zero is chosen on the whole.
   std::size_t copies = 1;
@@ -832,6 +836,10 @@ int cmd_machines(const std::string& show) {
 }  // namespace
 
 int main(int argc, char** argv) {
+#ifdef _WIN32
+  // Programs and CSV on standard output byte for byte as in a file: LF, not CRLF.
+  ::_setmode(::_fileno(stdout), _O_BINARY);
+#endif
   CLI::App cli{"acodrill orders the drill holes of a part so the spindle travels as little as possible, "
                "and writes the G-code that drills them.\n\n"
                "Examples:\n"

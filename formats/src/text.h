@@ -8,6 +8,7 @@
 #include <string_view>
 
 #include "formats/error.h"
+#include "formats/holes.h"
 
 namespace formats {
 
@@ -29,7 +30,7 @@ inline bool parse_number(std::string_view s, double& out) {
 
 // The file's name without folder and extension; "stdin" for standard input.
 inline std::string stem(const std::string& path) {
-  std::string base = path.substr(path.find_last_of('/') == std::string::npos ? 0 : path.find_last_of('/') + 1);
+  std::string base = file_name(path);
   if (auto dot = base.find_last_of('.'); dot != std::string::npos && dot > 0) base.resize(dot);
   return base.empty() || base == "-" ? "stdin" : base;
 }

@@ -5,7 +5,7 @@
 # to LinuxCNC programs that the Linux acodrill's verify accepts and LinuxCNC's
 # rs274 reads back to every hole; a bad input is exit 2, one error line and no
 # file, an existing program is replaced whole; and says whether the program
-# is byte-identical to Linux's.
+# is byte-identical to Linux's, on one thread as on two.
 #   tests/windows/wine_test.sh BUILD_WINDOWS_DIR LINUX_BUILD_DIR
 set -uo pipefail
 win="$1"; linux="$2"
@@ -47,7 +47,6 @@ cases=(
   "$work/pic-crlf.drl|excellon, CRLF"
   "$gerber|gerber x2"
 )
-identical=0; differ=0
 for c in "${cases[@]}"; do
   input="${c%%|*}"; what="${c#*|}"
   out="$work/out.ngc"; rm -f "$out"
@@ -61,9 +60,14 @@ for c in "${cases[@]}"; do
   got=$(rs274_holes "$out")
   if [ "$got" = "$expected" ]; then ok "$what: rs274 reads $got holes"; else bad "$what: rs274 reads $got holes, the input has $expected"; fi
   "$acodrill" plan "$input" -o "$work/linux.ngc" "${opts[@]}"
-  if cmp -s "$out" "$work/linux.ngc"; then identical=$((identical + 1)); else differ=$((differ + 1)); echo "note: $what: not byte-identical to Linux's"; fi
+  # The same input, options and seed: the same program, byte for byte, on Windows as on Linux.
+  if cmp -s "$out" "$work/linux.ngc"; then ok "$what: byte-identical to Linux's program"
+  else bad "$what: not byte-identical to Linux's: $(diff "$out" "$work/linux.ngc" | head -n 4 | tr '\n' ' ')"; fi
 done
-echo "byte-identical to Linux: $identical of $((identical + differ))"
+# And on one thread as on two.
+wine "$exe" plan "$(winpath "$root/samples/plate70.dxf")" -o "$(winpath "$work/one.ngc")" --iterations 40 --seed 3 --threads 1 -q
+wine "$exe" plan "$(winpath "$root/samples/plate70.dxf")" -o "$(winpath "$work/two.ngc")" --iterations 40 --seed 3 --threads 2 -q
+if cmp -s "$work/one.ngc" "$work/two.ngc"; then ok "one thread or two: the same program"; else bad "one thread and two differ"; fi
 
 # A bad input: exit 2, one line on stderr, no file; an existing program stays as it was.
 printf 'M48\nMETRIC\nT1C0.8\n%%\nT1\nX1.0Y\n' > "$work/bad.drl"

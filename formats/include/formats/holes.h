@@ -24,6 +24,16 @@
 
 namespace formats {
 
+// A path's last part, after the folders: after '/', and on Windows after '\\' too.
+inline std::string file_name(const std::string& path) {
+#ifdef _WIN32
+  const std::size_t slash = path.find_last_of("/\\");
+#else
+  const std::size_t slash = path.find_last_of('/');
+#endif
+  return slash == std::string::npos ? path : path.substr(slash + 1);
+}
+
 enum class InputFormat { Dxf, Excellon, Gerber, XmlMap, Csv, Tsplib, Program };
 const char* to_string(InputFormat f);
 
