@@ -263,6 +263,11 @@ TEST(owned_tools, a_slot_is_milled_along_its_length_round_both_ends) {
     auto v = testutil::acodrill_run("verify " + testutil::shell_quote(nc) + " --holes " + testutil::shell_quote(drl) + " -q" + opts);
     EXPECT_EQ(v.code, 0) << v.out;
   }
+  // Resumed at the slot's second end (87 round holes, then the slot's two ends): the whole slot again.
+  auto resumed = testutil::acodrill_run("plan " + testutil::shell_quote(drl) + " -o " + testutil::shell_quote(t / "r.ngc") +
+                                        " -q --iterations 5 --machine router --dialect linuxcnc --resume-from 89" + opts);
+  ASSERT_EQ(resumed.code, 0) << resumed.err;
+  EXPECT_THAT(testutil::slurp(t / "r.ngc"), ::testing::HasSubstr("(HOLES 88-89: A SLOT 1.500 WIDE, MILLED)"));
   // Milling slots needs the end mill, narrower than the slot.
   auto no_mill = testutil::acodrill_run("plan " + testutil::shell_quote(drl) + " -o " + testutil::shell_quote(t / "x.nc") +
                                         " -q --machine router --drills 0.3,0.4 --slots mill");

@@ -89,19 +89,22 @@ void apply_slot_policy(LoadedHoles& loaded, const SlotOptions& options, const st
       continue;
     }
     ++chain;
+    // A hole of the slot's width, one of its chain.
+    auto add = [&](aco::Point2 p, bool slot_end) {
+      aco::Hole h;
+      h.center = p;
+      h.diameter = slot.width_mm;
+      h.layer = slot.layer;
+      h.source_line = slot.source_line;
+      h.chain = chain;
+      h.slot_end = slot_end;
+      loaded.holes.push_back(std::move(h));
+    };
     if (options.policy == SlotPolicy::Mill && aco::euclidean(slot.from, slot.to) > 1e-6) {
-      ++loaded.slots_milled;
       // Its two ends, in order: the plan mills the slot between them.
-      for (aco::Point2 p : {slot.from, slot.to}) {
-        aco::Hole h;
-        h.center = p;
-        h.diameter = slot.width_mm;
-        h.layer = slot.layer;
-        h.source_line = slot.source_line;
-        h.chain = chain;
-        h.slot_end = true;
-        loaded.holes.push_back(std::move(h));
-      }
+      ++loaded.slots_milled;
+      add(slot.from, true);
+      add(slot.to, true);
       continue;
     }
     ++loaded.slots_drilled;
@@ -113,13 +116,7 @@ void apply_slot_policy(LoadedHoles& loaded, const SlotOptions& options, const st
                                                    " holes (the hole limit, --max-holes); a coarser --slot-pitch or --slots skip");
     }
     for (aco::Point2 p : slot_holes(slot, options.pitch_mm)) {
-      aco::Hole h;
-      h.center = p;
-      h.diameter = slot.width_mm;
-      h.layer = slot.layer;
-      h.source_line = slot.source_line;
-      h.chain = chain;
-      loaded.holes.push_back(std::move(h));
+      add(p, false);
       ++loaded.slot_holes;
     }
   }

@@ -202,6 +202,8 @@ void write_hobby_program(std::ostream& out, const std::vector<ToolPass>& passes,
   for (const ToolPass& p : passes) {
     std::size_t first = 0;
     while (first < p.holes.size() && p.index[first] < s.resume_from) ++first;
+    // Resumed at a milled slot's second end: the whole slot again.
+    if (first > 0 && first < p.slot_to_next.size() && p.slot_to_next[first - 1]) --first;
     if (first == p.holes.size()) continue;
     const Tool& t = p.tool;
     w.comment("T" + std::to_string(t.number) + " " + tool_name(t) + ", " + std::to_string(p.holes.size() - first) + " HOLES");
@@ -297,6 +299,8 @@ void write_program(std::ostream& out, const std::vector<ToolPass>& passes, const
     // The first hole of this pass that is drilled at all, given --resume-from.
     std::size_t first = 0;
     while (first < p.holes.size() && p.index[first] < s.resume_from) ++first;
+    // Resumed at a milled slot's second end: the whole slot again.
+    if (first > 0 && first < p.slot_to_next.size() && p.slot_to_next[first - 1]) --first;
     if (first == p.holes.size()) continue;
     const Tool& t = p.tool;
     const std::size_t count = p.holes.size() - first;
