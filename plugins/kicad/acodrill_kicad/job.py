@@ -223,7 +223,8 @@ def summary(report: dict) -> str:
     def saved(before, after):
         return f"{100.0 * (before - after) / before:.1f} %" if before > 0 else "-"
 
-    drills = ", ".join(f"{t['diameter_mm']:.3f} mm x {t['holes']}" for t in tools)
+    drills = ", ".join(f"{t['diameter_mm']:.3f} mm{' end mill' if t.get('kind') == 'end_mill' else ''} x {t['holes']}"
+                       for t in tools)
     before_t, after_t = time_s.get("input_order", 0.0), time_s.get("optimized", 0.0)
     before_d, after_d = travel.get("input_order", 0.0), travel.get("optimized", 0.0)
     lines = [
