@@ -218,24 +218,13 @@ void write_hobby_program(std::ostream& out, const std::vector<ToolPass>& passes,
     }
     w.spindle_on(3, t.spindle_rpm, s.spindle_start_s);
     if (t.end_mill) {
-      for (std::size_t i = first; i < p.holes.size(); ++i) {
-        const bool last = i + 1 == p.holes.size();
-        const bool clear = i < p.clear_after.size() && p.clear_after[i];
-        const double retract = !s.retract_to_r || last || clear ? s.initial_z_mm : s.r_plane_mm;
-        const double d = i < p.mill_diameter.size() ? p.mill_diameter[i] : t.diameter_mm;
-        if (i + 1 < p.slot_to_next.size() && p.slot_to_next[i]) {
-          const aco::Point2 a = p.holes[i], b = p.holes[i + 1];
-          const bool at_end = i + 2 == p.holes.size();
-          const double slot_retract = !s.retract_to_r || at_end || (i + 1 < p.clear_after.size() && p.clear_after[i + 1]) ? s.initial_z_mm
-                                                                                                               : s.r_plane_mm;
-          w.comment("HOLES " + std::to_string(p.index[i]) + "-" + std::to_string(p.index[i + 1]) + " A SLOT " + format_number(d, 3) + " WIDE, MILLED");
-          w.milled_hole(milled_slot_start(a, b, d, t), milled_slot_moves(a, b, d, t, s.r_plane_mm, slot_retract), s.r_plane_mm);
-          ++i;
-          continue;
-        }
-        w.comment("HOLE " + std::to_string(p.index[i]) + " MILLED D" + format_number(d, 3));
-        w.milled_hole(milled_hole_start(p.holes[i], d, t), milled_hole_moves(p.holes[i], d, t, s.r_plane_mm, retract),
-                      s.r_plane_mm);
+      for (std::size_t i = first; i < p.holes.size();) {
+        const MilledStop m = milled_stop(p, i, s);
+        w.comment(m.span == 2 ? "HOLES " + std::to_string(p.index[i]) + "-" + std::to_string(p.index[i + 1]) + " A SLOT " +
+                                    format_number(m.diameter_mm, 3) + " WIDE, MILLED"
+                              : "HOLE " + std::to_string(p.index[i]) + " MILLED D" + format_number(m.diameter_mm, 3));
+        w.milled_hole(m.start, m.moves, s.r_plane_mm);
+        i += m.span;
       }
       continue;
     }
@@ -308,7 +297,7 @@ void write_program(std::ostream& out, const std::vector<ToolPass>& passes, const
            " HOLES)");
     w.line("T" + std::to_string(t.number) + " M06 (" + comment_text(tool_name(t)) + ")");
     if (s.probe_plate_mm) w.probe_plate(t, *s.probe_plate_mm);
-    const aco::Point2 h0 = t.end_mill ? milled_hole_start(p.holes[first], p.mill_diameter.at(first), t) : p.holes[first];
+    const aco::Point2 h0 = t.end_mill ? milled_stop(p, first, s).start : p.holes[first];
     w.line("G00 G90 G54 X" + w.c(h0.x) + " Y" + w.c(h0.y) + " S" + std::to_string(t.spindle_rpm) + " M03");
     char hbuf[16];
     std::snprintf(hbuf, sizeof hbuf, "H%02d", t.number);
@@ -316,27 +305,14 @@ void write_program(std::ostream& out, const std::vector<ToolPass>& passes, const
     if (s.probe_plate_mm) w.line("G00 Z" + w.c(s.initial_z_mm) + " M08");
     else w.line("G43 " + std::string(hbuf) + " Z" + w.c(s.initial_z_mm) + " M08");
     if (t.end_mill) {
-      for (std::size_t i = first; i < p.holes.size(); ++i) {
-        const bool last = i + 1 == p.holes.size();
-        const bool clear = i < p.clear_after.size() && p.clear_after[i];
-        const double retract = !s.retract_to_r || last || clear ? s.initial_z_mm : s.r_plane_mm;
-        const double d = p.mill_diameter.at(i);
-        if (i + 1 < p.slot_to_next.size() && p.slot_to_next[i]) {
-          const aco::Point2 a = p.holes[i], b = p.holes[i + 1];
-          const bool at_end = i + 2 == p.holes.size();
-          const double slot_retract = !s.retract_to_r || at_end || (i + 1 < p.clear_after.size() && p.clear_after[i + 1]) ? s.initial_z_mm
-                                                                                                               : s.r_plane_mm;
-          const aco::Point2 start = milled_slot_start(a, b, d, t);
-          w.line(w.label(p.index[i]) + "G00 X" + w.c(start.x) + " Y" + w.c(start.y) + w.trailing_label(p.index[i]) +
-                 " (HOLES " + std::to_string(p.index[i]) + "-" + std::to_string(p.index[i + 1]) + ": A SLOT " + w.c(d) + " WIDE, MILLED)");
-          w.milled_hole(start, milled_slot_moves(a, b, d, t, s.r_plane_mm, slot_retract));
-          ++i;
-          continue;
-        }
-        const aco::Point2 start = milled_hole_start(p.holes[i], d, t);
-        w.line(w.label(p.index[i]) + "G00 X" + w.c(start.x) + " Y" + w.c(start.y) + w.trailing_label(p.index[i]) +
-               " (MILLED D" + w.c(d) + ")");
-        w.milled_hole(start, milled_hole_moves(p.holes[i], d, t, s.r_plane_mm, retract));
+      for (std::size_t i = first; i < p.holes.size();) {
+        const MilledStop m = milled_stop(p, i, s);
+        w.line(w.label(p.index[i]) + "G00 X" + w.c(m.start.x) + " Y" + w.c(m.start.y) + w.trailing_label(p.index[i]) +
+               (m.span == 2 ? " (HOLES " + std::to_string(p.index[i]) + "-" + std::to_string(p.index[i + 1]) + ": A SLOT " +
+                                  w.c(m.diameter_mm) + " WIDE, MILLED)"
+                            : " (MILLED D" + w.c(m.diameter_mm) + ")"));
+        w.milled_hole(m.start, m.moves);
+        i += m.span;
       }
     }
     bool mode_initial = false;

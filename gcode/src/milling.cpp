@@ -53,6 +53,25 @@ std::vector<PathMove> milled_hole_moves(aco::Point2 centre, double hole_diameter
   return m;
 }
 
+MilledStop milled_stop(const ToolPass& p, std::size_t i, const ProgramSettings& s) {
+  MilledStop stop;
+  const Tool& t = p.tool;
+  stop.diameter_mm = i < p.mill_diameter.size() ? p.mill_diameter[i] : t.diameter_mm;
+  stop.span = i + 1 < p.slot_to_next.size() && p.slot_to_next[i] ? 2 : 1;
+  const std::size_t last = i + stop.span - 1;
+  const bool clear = last < p.clear_after.size() && p.clear_after[last];
+  const double retract = !s.retract_to_r || last + 1 == p.holes.size() || clear ? s.initial_z_mm : s.r_plane_mm;
+  if (stop.span == 2) {
+    const aco::Point2 a = p.holes[i], b = p.holes[i + 1];
+    stop.start = milled_slot_start(a, b, stop.diameter_mm, t);
+    stop.moves = milled_slot_moves(a, b, stop.diameter_mm, t, s.r_plane_mm, retract);
+  } else {
+    stop.start = milled_hole_start(p.holes[i], stop.diameter_mm, t);
+    stop.moves = milled_hole_moves(p.holes[i], stop.diameter_mm, t, s.r_plane_mm, retract);
+  }
+  return stop;
+}
+
 namespace {
 
 // The racetrack's geometry: offset r from the segment a-b, unit direction u

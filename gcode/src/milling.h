@@ -41,6 +41,18 @@ aco::Point2 milled_slot_start(aco::Point2 a, aco::Point2 b, double width_mm, con
 std::vector<PathMove> milled_slot_moves(aco::Point2 a, aco::Point2 b, double width_mm, const Tool& end_mill,
                                         double r_plane_mm, double retract_z_mm);
 
+// Hole i of an end mill's pass as the writers mill it: a helix, or with the
+// next hole the slot the two end (ToolPass::slot_to_next); `span` holes are
+// made, `retract_z_mm` as G99/G98 would (R between holes, the initial plane
+// after the pass's last and before a move over a clamp).
+struct MilledStop {
+  aco::Point2 start;
+  std::vector<PathMove> moves;
+  std::size_t span = 1;
+  double diameter_mm = 0.0;  // the hole's, or the slot's width
+};
+MilledStop milled_stop(const ToolPass& pass, std::size_t i, const ProgramSettings& settings);
+
 // The decimals of a length in program units and a value rounded to them, so
 // that I and J are computed from the numbers as printed.
 inline double rounded(double value, int decimals) {
