@@ -86,17 +86,21 @@ RouteStats route_stats(const aco::HoleSet& holes, const std::vector<ToolGroup>& 
     bool slot_timed = false;  // the hole before was a milled slot's first end
     for (std::size_t i = 0; i < order.size(); ++i) {
       const aco::Point2 p = holes[order[i]].center;
-      st.travel_mm += aco::euclidean(at, p);
-      spend(split.moves_s, xy_move_time(at, p, m));
+      const gcode::Tool& tool = groups[g].tool;
+      const aco::Hole& h = holes[order[i]];
+      // A milled slot's second end: the slot, timed at its first, cut the way there.
+      const bool slot_second = tool.end_mill && h.slot_end && i > 0 && slot_timed && holes[order[i - 1]].slot_end &&
+                               holes[order[i - 1]].chain == h.chain;
+      if (!slot_second) {
+        st.travel_mm += aco::euclidean(at, p);
+        spend(split.moves_s, xy_move_time(at, p, m));
+      }
       const bool last = i + 1 == order.size();
       const bool clear = !last && crosses_clamp(p, holes[order[i + 1]].center, m);
-      const gcode::Tool& tool = groups[g].tool;
       const bool retract_initial = !s.retract_to_r || last || clear;
-      const aco::Hole& h = holes[order[i]];
       if (tool.end_mill && h.slot_end) {
         // A milled slot: its two ends follow each other; the whole slot is timed at the first.
-        const bool second = i > 0 && slot_timed && holes[order[i - 1]].slot_end && holes[order[i - 1]].chain == h.chain;
-        const bool first = !second;
+        const bool first = !slot_second;
         slot_timed = first;
         if (first && i + 1 < order.size()) {
           const aco::Point2 b = holes[order[i + 1]].center;
