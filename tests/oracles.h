@@ -139,7 +139,7 @@ inline Canon run_rs274(const std::string& program_path) {
 
 inline std::map<int, double> tool_diameters(const std::string& program) {
   std::map<int, double> d;
-  static const std::regex comment(R"(\(T(\d+) D=([0-9.]+) MM)");
+  static const std::regex comment(R"((?:\(|; )T(\d+) D=([0-9.]+) MM)");  // "(T1 D=" or Marlin's "; T1 D="
   for (std::sregex_iterator it(program.begin(), program.end(), comment), end; it != end; ++it) {
     d[std::stoi((*it)[1])] = std::stod((*it)[2]);
   }
