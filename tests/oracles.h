@@ -57,8 +57,8 @@ inline Canon run_rs274(const std::string& program_path) {
   // rs274 puts machine Z home (G53 Z0) at work Z 0; on the machine it is the
   // top of the travel, above everything: say so, so that the rapids that
   // follow it are seen where they run.
-  for (std::size_t at = prog.find("G53 G00 Z0."); at != std::string::npos; at = prog.find("G53 G00 Z0.", at)) {
-    prog.replace(at, 11, "G00 Z100.");
+  for (const std::string home : {"G53 G00 Z0.", "G91 G28 Z0."}) {  // HAAS and LinuxCNC; Fanuc
+    for (std::size_t at = prog.find(home); at != std::string::npos; at = prog.find(home, at)) prog.replace(at, home.size(), "G90 G00 Z100.");
   }
   testutil::spit(t / "p.ngc", prog);
   std::string table;

@@ -192,7 +192,7 @@ TEST_P(OwnedToolsOnBoards, the_router_drills_with_owned_drills_and_mills_the_res
   // KiCad's hole lists hold the round holes: slots (StickHub's oval pads) are left out here.
   const std::string opts = " --machine router --origin drawing --iterations 30 --seed 1 -q --slots skip --drills " + drills_text +
                            " --end-mill 1.0";
-  for (const char* dialect : {"grbl", "linuxcnc", "marlin"}) {
+  for (const char* dialect : {"grbl", "linuxcnc", "marlin", "haas", "fanuc"}) {
     const std::string what = board + " " + dialect;
     const std::string nc = t / (std::string(dialect) + ".nc");
     auto r = testutil::acodrill_run("plan " + testutil::shell_quote(drl) + " -o " + testutil::shell_quote(nc) + opts +
