@@ -166,15 +166,18 @@ struct BenchArgs {
   std::optional<double> alignment_pins;
 };
 
-void add_bench_options(CLI::App* cmd, BenchArgs& a) {
+// `plan`: the options default to the machine profile's keys (verify has no machine; it takes what plan was given).
+void add_bench_options(CLI::App* cmd, BenchArgs& a, bool plan) {
   cmd->add_option("--drills", a.drills,
                   "The drills you own, mm, comma-separated, each DIA or DIA:-MINUS:+PLUS (how much smaller and larger "
                   "than a hole it may be; default -0.05 and +0.10: leads need clearance, and larger is the safe side). "
                   "Each hole goes to a drill that fits it, using the fewest drills that cover every hole, then the "
-                  "closest fit (default: the machine profile's drills_owned, else one drill per diameter)");
+                  "closest fit" + std::string(plan ? " (default: the machine profile's drills_owned, else one drill per diameter)"
+                                                   : "; give verify what plan was given"));
   cmd->add_option("--end-mill", a.end_mill,
                   "Diameter (mm) of an end mill for the holes no owned drill fits: each is milled by a helix about "
-                  "its centre to its size, as one more tool routed like a drill (default: the profile's end_mill_mm)")
+                  "its centre to its size, as one more tool routed like a drill" +
+                      std::string(plan ? " (default: the profile's end_mill_mm)" : ""))
       ->check(CLI::Range(0.05, 100.0));
   cmd->add_option("--side", a.side,
                   "front (default) | back: drill the board from its back, the holes mirrored about the vertical line "
@@ -872,6 +875,11 @@ int main(int argc, char** argv) {
       "                                                            the thesis's Ant System\n"
       "  acodrill plan board.drl -o board.nc --machine router      a desktop router on GRBL: every hole as G0/G1\n"
       "                                                            moves, a pause naming each drill (--dialect marlin)\n"
+      "  acodrill plan board.drl -o board.gcode --machine router --drills 0.6,0.8,1.0,1.2 --end-mill 1.0 --probe-plate 0.5\n"
+      "                                                            the drills you own, an end mill for the rest, Z probed\n"
+      "                                                            on a 0.5 mm touch plate after each change\n"
+      "  acodrill plan board.drl -o back.gcode --machine router --side back --alignment-pins 3\n"
+      "                                                            the back of the board, mirrored, two pin holes first\n"
       "  acodrill plan board-PTH.drl board-NPTH.drl -o board.nc --machine pcb-drill\n"
       "                                                            plated and non-plated holes, one program\n"
       "  acodrill plan board.drl -o panel.nc --panel 3x2 --pitch 60,40 --batch 50\n"
@@ -943,7 +951,7 @@ int main(int argc, char** argv) {
                        "on it (G38.2), set Z to its thickness and pause to take the clip off (default: the profile's "
                        "probe_plate_mm; refused for HAAS and Fanuc)")
       ->check(CLI::Range(0.01, 50.0));
-  add_bench_options(plan_cmd, plan.bench);
+  add_bench_options(plan_cmd, plan.bench, true);
   plan_cmd->add_flag("--filter-progress", plan.filter_progress,
                      "Print the progress as FILTER_PROGRESS=N lines (N percent) on stderr, as LinuxCNC's AXIS reads "
                      "them from a filter program (acodrill-linuxcnc-filter)");
@@ -989,7 +997,7 @@ int main(int argc, char** argv) {
   verify_cmd->add_option("--pitch", verify_pitch, "DX,DY in mm, with --panel COLSxROWS");
   verify_cmd->add_flag("-q,--quiet", quiet, "No summary on stderr");
   BenchArgs verify_bench;
-  add_bench_options(verify_cmd, verify_bench);
+  add_bench_options(verify_cmd, verify_bench, false);
   add_input_options(verify_cmd, verify_in);
 
   std::string machines_show;
