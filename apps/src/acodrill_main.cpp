@@ -595,10 +595,9 @@ int cmd_plan(const PlanArgs& a, const SolverArgs& s, const InputArgs& in_args) {
   o.program.probe_plate_mm = a.probe_plate ? a.probe_plate : o.machine.probe_plate_mm;
   o.program.probe_feed_mm_min = o.machine.probe_feed_mm_min;
   o.program.probe_travel_mm = o.machine.probe_travel_mm;
-  if (o.program.probe_plate_mm && (o.program.dialect == gcode::Dialect::Haas || o.program.dialect == gcode::Dialect::Fanuc)) {
-    throw app::UserError(std::string("--probe-plate: a ") + (o.program.dialect == gcode::Dialect::Haas ? "HAAS" : "Fanuc") +
-                         " measures its tools with its own probing cycles and length offsets; touch-plate probing is "
-                         "written for --dialect grbl, marlin or linuxcnc");
+  // Refused before any work, not when the program is written.
+  if (o.program.probe_plate_mm) {
+    if (auto refusal = gcode::probe_plate_refusal(o.program.dialect)) throw app::UserError(*refusal);
   }
 
   app::Job job = app::load_job(a.inputs, to_input_options(in_args));

@@ -132,6 +132,13 @@ const char* to_string(Dialect d) {
   return "?";
 }
 
+std::optional<std::string> probe_plate_refusal(Dialect d) {
+  if (d != Dialect::Haas && d != Dialect::Fanuc) return std::nullopt;
+  return std::string("--probe-plate: a ") + (d == Dialect::Haas ? "HAAS" : "Fanuc") +
+         " control measures its tools with its own probing cycles and length offsets; touch-plate probing is written "
+         "for --dialect grbl, marlin or linuxcnc";
+}
+
 bool has_canned_cycles(Dialect d) { return d != Dialect::Grbl && d != Dialect::Marlin; }
 
 std::optional<Dialect> dialect_from_string(const std::string& name) {
@@ -172,6 +179,15 @@ std::string format_number(double value, int decimals) {
 
 namespace {
 
+// The first hole of a pass that is made at all, given --resume-from (a milled
+// slot resumed at its second end is milled whole again).
+std::size_t first_written(const ToolPass& p, std::size_t resume_from) {
+  std::size_t first = 0;
+  while (first < p.holes.size() && p.index[first] < resume_from) ++first;
+  if (first > 0 && first < p.slot_to_next.size() && p.slot_to_next[first - 1]) --first;
+  return first;
+}
+
 // The tool's canned cycle as the words a canned-cycle control would be given.
 HoleCycle cycle_of(const Tool& t, const ProgramSettings& s) {
   HoleCycle c;
@@ -200,10 +216,7 @@ void write_hobby_program(std::ostream& out, const std::vector<ToolPass>& passes,
   w.start();
   w.rapid_z(s.initial_z_mm);
   for (const ToolPass& p : passes) {
-    std::size_t first = 0;
-    while (first < p.holes.size() && p.index[first] < s.resume_from) ++first;
-    // Resumed at a milled slot's second end: the whole slot again.
-    if (first > 0 && first < p.slot_to_next.size() && p.slot_to_next[first - 1]) --first;
+    const std::size_t first = first_written(p, s.resume_from);
     if (first == p.holes.size()) continue;
     const Tool& t = p.tool;
     w.comment("T" + std::to_string(t.number) + " " + tool_name(t) + ", " + std::to_string(p.holes.size() - first) + " HOLES");
@@ -252,10 +265,8 @@ void write_program(std::ostream& out, const std::vector<ToolPass>& passes, const
     throw std::invalid_argument("program number must be 1..99999");
   }
   if (!(s.r_plane_mm < s.initial_z_mm)) throw std::invalid_argument("the R plane must lie below the initial Z");
-  if (s.probe_plate_mm && (s.dialect == Dialect::Haas || s.dialect == Dialect::Fanuc)) {
-    throw std::invalid_argument(std::string("--probe-plate: a ") + (s.dialect == Dialect::Haas ? "HAAS" : "Fanuc") +
-                                " control measures its tools with its own probing cycles and length offsets; touch-plate "
-                                "probing is written for --dialect grbl, marlin or linuxcnc");
+  if (s.probe_plate_mm) {
+    if (auto refusal = probe_plate_refusal(s.dialect)) throw std::invalid_argument(*refusal);
   }
   std::size_t total = 0;
   for (const ToolPass& p : passes) total += p.holes.size();
@@ -285,11 +296,7 @@ void write_program(std::ostream& out, const std::vector<ToolPass>& passes, const
   w.line(w.z_home());
 
   for (const ToolPass& p : passes) {
-    // The first hole of this pass that is drilled at all, given --resume-from.
-    std::size_t first = 0;
-    while (first < p.holes.size() && p.index[first] < s.resume_from) ++first;
-    // Resumed at a milled slot's second end: the whole slot again.
-    if (first > 0 && first < p.slot_to_next.size() && p.slot_to_next[first - 1]) --first;
+    const std::size_t first = first_written(p, s.resume_from);
     if (first == p.holes.size()) continue;
     const Tool& t = p.tool;
     const std::size_t count = p.holes.size() - first;
@@ -314,29 +321,30 @@ void write_program(std::ostream& out, const std::vector<ToolPass>& passes, const
         w.milled_hole(m.start, m.moves);
         i += m.span;
       }
-    }
-    bool mode_initial = false;
-    for (std::size_t i = t.end_mill ? p.holes.size() : first; i < p.holes.size(); ++i) {
-      const aco::Point2& h = p.holes[i];
-      const bool last = i + 1 == p.holes.size();
-      // G99 (back to R) between holes saves time; G98 (back to the initial
-      // plane) for the last hole of a tool and before a move over a clamp.
-      const bool clear = i < p.clear_after.size() && p.clear_after[i];
-      const bool want_initial = !s.retract_to_r || last || clear;
-      std::string retract;
-      if (i == first || want_initial != mode_initial) retract = want_initial ? "G98 " : "G99 ";
-      mode_initial = want_initial;
-      std::string text = w.label(p.index[i]) + retract;
-      if (i == first) {
-        text += std::string(to_string(t.cycle)) + " X" + w.c(h.x) + " Y" + w.c(h.y) + " Z" + w.c(t.depth_mm) + " R" +
-                w.c(s.r_plane_mm);
-        if (t.cycle == Cycle::G83 || t.cycle == Cycle::G73) text += " Q" + w.c(t.peck_mm);
-        if (t.cycle == Cycle::G82) text += " " + w.dwell(t.dwell_s);
-        text += " F" + w.f(t.feed_mm_min);
-      } else {
-        text += "X" + w.c(h.x) + " Y" + w.c(h.y);
+    } else {
+      bool mode_initial = false;
+      for (std::size_t i = first; i < p.holes.size(); ++i) {
+        const aco::Point2& h = p.holes[i];
+        const bool last = i + 1 == p.holes.size();
+        // G99 (back to R) between holes saves time; G98 (back to the initial
+        // plane) for the last hole of a tool and before a move over a clamp.
+        const bool clear = i < p.clear_after.size() && p.clear_after[i];
+        const bool want_initial = !s.retract_to_r || last || clear;
+        std::string retract;
+        if (i == first || want_initial != mode_initial) retract = want_initial ? "G98 " : "G99 ";
+        mode_initial = want_initial;
+        std::string text = w.label(p.index[i]) + retract;
+        if (i == first) {
+          text += std::string(to_string(t.cycle)) + " X" + w.c(h.x) + " Y" + w.c(h.y) + " Z" + w.c(t.depth_mm) + " R" +
+                  w.c(s.r_plane_mm);
+          if (t.cycle == Cycle::G83 || t.cycle == Cycle::G73) text += " Q" + w.c(t.peck_mm);
+          if (t.cycle == Cycle::G82) text += " " + w.dwell(t.dwell_s);
+          text += " F" + w.f(t.feed_mm_min);
+        } else {
+          text += "X" + w.c(h.x) + " Y" + w.c(h.y);
+        }
+        w.line(text + w.trailing_label(p.index[i]));
       }
-      w.line(text + w.trailing_label(p.index[i]));
     }
     w.line("G80");
     w.line("M09");

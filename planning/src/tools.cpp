@@ -235,12 +235,11 @@ void complete_tool_table(ToolTable& table, Material material, double thickness_m
     if (!e.has_rpm) e.tool.spindle_rpm = g.spindle_rpm;
     if (!e.has_feed) e.tool.feed_mm_min = g.feed_mm_min;
     if (!e.has_depth) e.tool.depth_mm = g.depth_mm;
-    if (!e.has_cycle && e.tool.cycle == gcode::Cycle::G81 && e.tool.peck_mm == 0 && e.tool.dwell_s == 0) {
+    if (!e.has_cycle && e.tool.peck_mm == 0 && e.tool.dwell_s == 0) {
       // A peck or a dwell given says which cycle was meant; otherwise the generated one.
       e.tool.cycle = g.cycle;
       e.tool.peck_mm = g.peck_mm;
     }
-    e.has_rpm = e.has_feed = e.has_depth = e.has_cycle = true;
   }
 }
 

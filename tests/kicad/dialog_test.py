@@ -81,10 +81,13 @@ class Dialog(unittest.TestCase):
             if shots:
                 screenshot(dialog, os.path.join(shots, "kicad-dialog-planned.png"))
             # Issue 53: the drills owned, an end mill, the back of the board and a touch plate.
-            dialog.drills.SetValue("0.4, 0.6,0.8,1.0")
-            dialog.end_mill.SetValue(1.0)
-            dialog.from_back.SetValue(True)
-            dialog.probe_plate.SetValue(0.5)
+            def bench(drills, end_mill, from_back, probe_plate):
+                dialog.drills.SetValue(drills)
+                dialog.end_mill.SetValue(end_mill)
+                dialog.from_back.SetValue(from_back)
+                dialog.probe_plate.SetValue(probe_plate)
+
+            bench("0.4, 0.6,0.8,1.0", 1.0, True, 0.5)
             dialog.on_plan(None)
             text = dialog.result.GetValue()
             self.assertEqual(dialog.result.GetForegroundColour(), wx.BLACK, text)
@@ -97,10 +100,7 @@ class Dialog(unittest.TestCase):
             self.assertIn("\nG2 ", program)
             if shots:
                 screenshot(dialog, os.path.join(shots, "kicad-dialog-owned-tools.png"))
-            dialog.drills.SetValue("")
-            dialog.end_mill.SetValue(0)
-            dialog.from_back.SetValue(False)
-            dialog.probe_plate.SetValue(0)
+            bench("", 0, False, 0)
             # Another dialect renames the program while the user has not chosen a file.
             dialog.dialect.SetSelection(1 + ["haas", "fanuc", "linuxcnc", "grbl", "marlin"].index("linuxcnc"))
             dialog.on_machine(None)

@@ -101,6 +101,9 @@ Helix helix_for(double hole_diameter_mm, const Tool& end_mill);
 double milled_slot_length_mm(aco::Point2 a, aco::Point2 b, double width_mm, const Tool& end_mill);
 
 const char* to_string(Dialect d);
+// Why this dialect's programs do not probe a touch plate (HAAS, Fanuc: their
+// controls measure tools with their own cycles); nullopt where they do.
+std::optional<std::string> probe_plate_refusal(Dialect d);
 // False for GRBL and Marlin: no canned cycles, no M6, no G43, no G98/G99.
 bool has_canned_cycles(Dialect d);
 std::optional<Dialect> dialect_from_string(const std::string& name);
