@@ -107,7 +107,8 @@ TEST(local_search_test, every_move_set_keeps_a_route_never_lengthens_it_and_ends
                                         std::pair{Moves::OrOpt, aco::detail::LocalSearcher::kFarShift},
                                         std::pair{Moves::OrOpt, std::size_t{0}},
                                         std::pair{Moves::ThreeOpt, aco::detail::LocalSearcher::kFarShift},
-                                        std::pair{Moves::ThreeOpt, std::size_t{0}}}) {
+                                        std::pair{Moves::ThreeOpt, std::size_t{0}},
+                                        std::pair{Moves::FiveOpt, aco::detail::LocalSearcher::kFarShift}}) {
           SCOPED_TRACE(::testing::Message() << "shape " << int(shape) << " clustered " << clustered << " seed " << seed
                                             << " moves " << int(moves) << " far shift " << far_shift);
           std::vector<HoleIndex> route = start;
@@ -281,6 +282,7 @@ TEST(local_search_test, flip_overlay_reads_as_the_same_flips_made_on_an_array) {
 // way, closed and open, from whole searches and from an ant's seeds.
 TEST(local_search_test, deepen_finds_the_same_moves_with_its_trial_flips_in_the_overlay) {
   for (aco::Shape shape : {aco::Shape::ClosedTour, aco::Shape::OpenPath}) {
+   for (Moves moves : {Moves::ThreeOpt, Moves::FiveOpt}) {  // 3-opt's deeper steps and 5-opt's chain
     for (bool clustered : {false, true}) {
       const aco::Problem p = random_problem(4000, clustered ? 3u : 4u, shape, clustered);
       const aco::detail::Space space(p);
@@ -288,11 +290,12 @@ TEST(local_search_test, deepen_finds_the_same_moves_with_its_trial_flips_in_the_
       std::vector<std::vector<HoleIndex>> routes;
       std::vector<double> gains;
       for (std::size_t array_flip : {std::numeric_limits<std::size_t>::max(), std::size_t{0}, std::size_t{40}}) {
-        SCOPED_TRACE(::testing::Message() << "shape " << int(shape) << " clustered " << clustered << " array flip " << array_flip);
+        SCOPED_TRACE(::testing::Message() << "shape " << int(shape) << " moves " << int(moves) << " clustered " << clustered
+                                          << " array flip " << array_flip);
         aco::detail::LocalSearcher ls(space, cand);
         ls.array_flip(array_flip);
         std::vector<HoleIndex> route = start_route(space, p, 1);  // shuffled: long flips from the start
-        ls.improve(route, Moves::ThreeOpt);
+        ls.improve(route, moves);
         double gain = ls.gain();
         std::mt19937 rng(5);
         for (int kick = 0; kick < 30; ++kick) {
@@ -300,7 +303,7 @@ TEST(local_search_test, deepen_finds_the_same_moves_with_its_trial_flips_in_the_
           std::vector<HoleIndex> seeds;
           local_double_bridge(route, rng, seeds);
           if (seeds.empty()) continue;
-          ls.improve_from(route, Moves::ThreeOpt, seeds);
+          ls.improve_from(route, moves, seeds);
           gain += ls.gain();
         }
         expect_route(space, route);
@@ -311,6 +314,53 @@ TEST(local_search_test, deepen_finds_the_same_moves_with_its_trial_flips_in_the_
       EXPECT_EQ(routes[2], routes[0]);
       EXPECT_EQ(gains[1], gains[0]);
       EXPECT_EQ(gains[2], gains[0]);
+    }
+   }
+  }
+}
+
+TEST(local_search_test, five_opt_on_penalised_costs_shortens_three_opt_optima) {
+  // LKH's 5-opt step with alpha-nearness candidates, its gains paid in the
+  // ascent's penalised costs (the colony's set-up above 800 holes): every
+  // move it makes must shorten the route in lengths (audited), its gains
+  // must add up to what the route lost, and from a 3-opt local optimum it
+  // must find more. Fails if the penalties were added on one side of a move
+  // only, or if the chain's trial moves were kept without a gain.
+  for (aco::Shape shape : {aco::Shape::ClosedTour, aco::Shape::OpenPath}) {
+    for (unsigned seed = 1; seed <= 4; ++seed) {
+      const aco::Problem p = random_problem(2500, seed, shape, seed % 2 == 0);
+      const aco::detail::Space space(p);
+      // As the colony builds them: the clusters joined, so the ascent runs.
+      const aco::detail::Candidates nearest = aco::detail::joined_nearest(space, 16);
+      const aco::detail::Candidates cand = aco::detail::alpha_candidates(space, nearest, 5, 30);
+      ASSERT_TRUE(cand.has_pi());
+      ASSERT_TRUE(std::any_of(cand.pi.begin(), cand.pi.end(), [](double x) { return x != 0.0; }));
+      // The penalised rows: the same holes, sorted by d + pi + pi, which stands beside each.
+      for (HoleIndex i = 0; i < space.holes(); ++i) {
+        const std::size_t row = static_cast<std::size_t>(i) * static_cast<std::size_t>(cand.k);
+        std::vector<HoleIndex> a(cand.of(i), cand.of(i) + cand.k), b(cand.pi_list.begin() + static_cast<long>(row),
+                                                                      cand.pi_list.begin() + static_cast<long>(row) + cand.k);
+        std::sort(a.begin(), a.end());
+        std::sort(b.begin(), b.end());
+        ASSERT_EQ(a, b) << "hole " << i;
+        for (int r = 0; r < cand.k; ++r) {
+          const HoleIndex j = cand.pi_list[row + static_cast<std::size_t>(r)];
+          ASSERT_DOUBLE_EQ(cand.pi_length[row + static_cast<std::size_t>(r)], space.d(i, j) + cand.pi[i] + cand.pi[j]);
+          if (r > 0) {
+            ASSERT_LE(cand.pi_length[row + static_cast<std::size_t>(r) - 1], cand.pi_length[row + static_cast<std::size_t>(r)]);
+          }
+        }
+      }
+      std::vector<HoleIndex> route = start_route(space, p, 2);
+      aco::detail::LocalSearcher ls(space, cand);
+      ls.audit(true);
+      ls.improve(route, Moves::ThreeOpt);
+      const double three_opt = space.route_cost(route);
+      ls.improve(route, Moves::FiveOpt);
+      expect_route(space, route);
+      EXPECT_NEAR(ls.gain(), three_opt - space.route_cost(route), 1e-9 * three_opt);
+      EXPECT_LT(space.route_cost(route), three_opt * 0.998) << "seed " << seed;
+      EXPECT_EQ(ls.failed_audits(), 0u) << "moves that did not shorten the route";
     }
   }
 }

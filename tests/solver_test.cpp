@@ -48,7 +48,7 @@ aco::Params quick(aco::Algorithm a, aco::LocalSearch ls = aco::LocalSearch::TwoO
 const aco::Algorithm kAll[] = {aco::Algorithm::AntSystem, aco::Algorithm::MaxMinAntSystem,
                                aco::Algorithm::AntColonySystem, aco::Algorithm::FocusedAcs};
 const aco::LocalSearch kAllLs[] = {aco::LocalSearch::None, aco::LocalSearch::TwoOpt, aco::LocalSearch::TwoOptOrOpt,
-                                   aco::LocalSearch::ThreeOpt};
+                                   aco::LocalSearch::ThreeOpt, aco::LocalSearch::FiveOpt};
 
 }  // namespace
 
@@ -158,14 +158,18 @@ TEST(solver_test, same_seed_same_tour_for_1_2_and_5_threads) {
 
 TEST(solver_test, same_seed_same_tour_on_any_thread_count_with_3opt_and_alpha_candidates) {
   // Above 800 holes: alpha-nearness lists after the ascent, 3-opt with deeper
-  // steps, ants that copy the reference run by run and sum their gains.
+  // steps or LKH's 5-opt step on penalised costs, ants that copy the
+  // reference run by run and sum their gains.
   for (aco::Shape shape : {aco::Shape::ClosedTour, aco::Shape::OpenPath}) {
+   for (aco::LocalSearch ls : {aco::LocalSearch::ThreeOpt, aco::LocalSearch::FiveOpt}) {
     aco::Problem p = random_problem(1500, 12, shape);
-    aco::Params params = quick(aco::Algorithm::FocusedAcs, aco::LocalSearch::ThreeOpt);
+    aco::Params params = quick(aco::Algorithm::FocusedAcs, ls);
     params.iterations = 60;
-    const aco::Solution one = solve_on_1_2_and_5_threads(p, params, shape == aco::Shape::OpenPath ? "open" : "closed");
+    const aco::Solution one = solve_on_1_2_and_5_threads(
+        p, params, std::string(shape == aco::Shape::OpenPath ? "open " : "closed ") + aco::to_string(ls));
     EXPECT_NEAR(one.length, aco::route_length(p, one.order), 1e-6 * one.length);
     EXPECT_LE(one.length, aco::route_length(p, aco::nearest_neighbor_2opt(p)));
+   }
   }
 }
 

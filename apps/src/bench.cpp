@@ -108,7 +108,7 @@ aco::Params solver_params(const std::string& algorithm, const std::string& local
   auto alg = aco::algorithm_from_string(algorithm);
   if (!alg) throw UserError("--algorithm must be one of focused, acs, mmas, as (got \"" + algorithm + "\")");
   auto ls = aco::local_search_from_string(local_search);
-  if (!ls) throw UserError("--local-search must be one of none, 2opt, 2opt+oropt, 3opt (got \"" + local_search + "\")");
+  if (!ls) throw UserError("--local-search must be one of none, 2opt, 2opt+oropt, 3opt, 5opt, auto (got \"" + local_search + "\")");
   p.algorithm = *alg;
   p.local_search = *ls;
   return p;

@@ -30,6 +30,8 @@ Candidates alpha_candidates(const Space& space, const Candidates& nearest, int k
   out.list.assign(static_cast<std::size_t>(n) * out.k, 0);
   out.length.assign(out.list.size(), 0.0);
   if (out.k == 0) return out;
+  out.pi_list.assign(out.list.size(), 0);
+  out.pi_length.assign(out.list.size(), 0.0);
   // The neighbour graph, each edge once.
   std::vector<SpanningForest::Edge> graph;
   {
@@ -186,8 +188,17 @@ Candidates alpha_candidates(const Space& space, const Candidates& nearest, int k
         o[r] = nr[row[r].second];
         o_length[r] = space.d(i, o[r]);
       }
+      row.clear();
+      for (int r = 0; r < out.k; ++r) row.push_back({o_length[r] + pi[i] + pi[o[r]], r});
+      std::stable_sort(row.begin(), row.end());
+      for (int r = 0; r < out.k; ++r) {
+        const std::size_t at = static_cast<std::size_t>(i) * out.k + static_cast<std::size_t>(r);
+        out.pi_list[at] = o[row[r].second];
+        out.pi_length[at] = row[r].first;
+      }
     }
   });
+  out.pi = std::move(pi);
   return out;
 }
 

@@ -27,9 +27,18 @@ struct Candidates {
   // distance computed there each time, the same routes took 10-14 % longer
   // (brd14051, d15112, pcb3038, pla7397). Every builder below fills it.
   std::vector<double> length;
+  // Filled by alpha_candidates only: the ascent's penalties, and the same rows
+  // sorted by the costs they give, c(i, j) = d(i, j) + pi[i] + pi[j], with
+  // those costs beside them. LKH's 5-opt step pays its gains in these
+  // (five_opt.cpp): a whole tour's cost only moves by 2 sum(pi), but a
+  // partial gain that stays positive says more of where a tour goes.
+  std::vector<double> pi;
+  std::vector<HoleIndex> pi_list;
+  std::vector<double> pi_length;
 
   const HoleIndex* of(HoleIndex i) const { return list.data() + static_cast<std::size_t>(i) * k; }
   const double* lengths_of(HoleIndex i) const { return length.data() + static_cast<std::size_t>(i) * k; }
+  bool has_pi() const { return !pi.empty(); }
 };
 
 // threads: how many workers fill the rows (each row alone, so any count gives

@@ -30,7 +30,7 @@ inline bool on_the_way(std::size_t pa, std::size_t pb, std::size_t pc) {
 
 class FlipOverlay {
  public:
-  static constexpr int kMaxFlips = 12;
+  static constexpr int kMaxFlips = 20;
 
   // Reads `route` (m holes) and `pos` (each hole's place in it) as they are
   // now; they must not change while this is in use. `shortest_side`: a
@@ -83,6 +83,7 @@ class FlipOverlay {
     return shortest_side_ ? std::min(inner, m_ - inner) : inner;
   }
   int flips() const { return flips_; }
+  std::size_t size() const { return m_; }
   const std::array<HoleIndex, 4>& flip_at(int i) const { return log_[static_cast<std::size_t>(i)]; }
 
  private:

@@ -484,6 +484,7 @@ void LocalSearcher::run_queue(Moves moves) {
     bool moved = try_two_opt(a);
     if (!moved && moves != Moves::TwoOpt) moved = try_or_opt(a);
     if (!moved && moves == Moves::ThreeOpt && !windowed_) moved = try_three_opt(a);
+    if (!moved && moves == Moves::FiveOpt && !windowed_) moved = m_ >= 8 ? try_five_opt(a) : try_three_opt(a);
     if (audit_) {
       ++audited_searches_;
       const double after = space_.route_cost(route_);

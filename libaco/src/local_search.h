@@ -10,6 +10,7 @@
 
 #include "candidates.h"
 #include "flip_overlay.h"
+#include "kopt_move.h"
 #include "space.h"
 
 namespace aco::detail {
@@ -23,7 +24,10 @@ enum class Moves {
   // McGeoch 1997; LK's depth-3 step): the two that are two 2-opt flips in a
   // row, and the two that move a whole stretch of the route elsewhere, turned
   // or not, which Or-opt does only for stretches of up to 3 holes.
-  ThreeOpt
+  ThreeOpt,
+  // 2-opt, Or-opt, then LKH's sequential 5-opt step in place of the 3-opt
+  // step and its deeper steps (five_opt.cpp).
+  FiveOpt
 };
 
 // Aligned to a cache line: one searcher per ant, and ants run on different threads.
@@ -111,9 +115,19 @@ class alignas(64) LocalSearcher {
     HoleIndex next(HoleIndex x, int dir) const { return s.next(x, dir); }
     bool between(HoleIndex a, HoleIndex b, HoleIndex c, int dir) const { return s.between(a, b, c, dir); }
     void flip(HoleIndex a, HoleIndex b, HoleIndex c, HoleIndex d) { s.flip(a, b, c, d); }
+    std::size_t position(HoleIndex x) const { return s.pos_[x]; }
+    std::size_t size() const { return s.m_; }
   };
   // From a step three_opt_step left: makes it and searches on (see the .cpp).
   bool deepen(HoleIndex t1, Step step);
+  // LKH's sequential 5-opt step from t1, and its chain from a step that
+  // did not gain (five_opt.cpp).
+  bool try_five_opt(HoleIndex t1);
+  bool five_opt_chain(HoleIndex t1, KOptMove step, double gain);
+  // 5-opt steps a chain makes on trial before it gives up.
+  static constexpr int kFiveOptSteps = 3;
+  static_assert(kMaxMoveK * (kFiveOptSteps + 1) <= FlipOverlay::kMaxFlips + kMaxMoveK,
+                "a chain's trial flips must mostly fit the overlay");
   // How many 3-opt steps deepen() searches below the first. Before, the
   // deeper steps were 2-opt steps (six flips at most, the best of 5
   // neighbours at each). `acodrill tsp --threads 2`, median gap, that way ->
@@ -179,6 +193,8 @@ class alignas(64) LocalSearcher {
   std::vector<HoleIndex> route_;
   std::vector<std::uint32_t> pos_;  // 4 bytes a hole: at 10^5 holes the searcher's hot data fits the cache better
   std::vector<std::array<HoleIndex, 4>> flips_;  // deepen's flips made on the array, to undo
+  // A 5-opt chain's edges: added ones are not removed again, removed ones not added.
+  std::vector<std::array<HoleIndex, 2>> chain_added_, chain_removed_;
   FlipOverlay trial_;  // deepen's flips from its first long one on (kArrayFlip)
   std::vector<HoleIndex> queue_;
   std::vector<char> queued_;

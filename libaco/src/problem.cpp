@@ -71,6 +71,8 @@ const char* to_string(LocalSearch local_search) {
     case LocalSearch::TwoOpt: return "2opt";
     case LocalSearch::TwoOptOrOpt: return "2opt+oropt";
     case LocalSearch::ThreeOpt: return "3opt";
+    case LocalSearch::FiveOpt: return "5opt";
+    case LocalSearch::Auto: return "auto";
   }
   return "?";
 }
@@ -83,7 +85,7 @@ std::optional<Algorithm> algorithm_from_string(const std::string& name) {
 }
 
 std::optional<LocalSearch> local_search_from_string(const std::string& name) {
-  for (LocalSearch l : {LocalSearch::None, LocalSearch::TwoOpt, LocalSearch::TwoOptOrOpt, LocalSearch::ThreeOpt}) {
+  for (LocalSearch l : {LocalSearch::None, LocalSearch::TwoOpt, LocalSearch::TwoOptOrOpt, LocalSearch::ThreeOpt, LocalSearch::FiveOpt, LocalSearch::Auto}) {
     if (name == to_string(l)) return l;
   }
   if (name == "oropt" || name == "or-opt" || name == "2opt+or-opt") return LocalSearch::TwoOptOrOpt;

@@ -23,7 +23,8 @@ Solution Colony::run() {
   s.best_route.insert(s.best_route.end(), nn.begin(), nn.end());
   const double c_nn = std::max(space_.route_cost(s.best_route), 1e-9);
   s.use_ls = p_.local_search != LocalSearch::None;
-  s.moves = p_.local_search == LocalSearch::ThreeOpt      ? Moves::ThreeOpt
+  s.moves = p_.local_search == LocalSearch::FiveOpt       ? Moves::FiveOpt
+            : p_.local_search == LocalSearch::ThreeOpt    ? Moves::ThreeOpt
             : p_.local_search == LocalSearch::TwoOptOrOpt ? Moves::OrOpt
                                                           : Moves::TwoOpt;
   if (s.use_ls) {

@@ -24,7 +24,7 @@ struct BenchCell {
   double alpha = 1, beta = -1, rho = -1;  // -1: the algorithm's default
   int ants = 0, iterations = 0, threads = 1;
   double time_limit_s = 0;
-  std::string local_search = "3opt";
+  std::string local_search = "auto";
 };
 
 struct BenchRun {

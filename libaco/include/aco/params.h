@@ -21,8 +21,11 @@ enum class Algorithm {
   FocusedAcs
 };
 
-// ThreeOpt adds sequential 3-opt moves to 2-opt and Or-opt.
-enum class LocalSearch { None, TwoOpt, TwoOptOrOpt, ThreeOpt };
+// ThreeOpt adds sequential 3-opt moves to 2-opt and Or-opt; FiveOpt adds
+// LKH's sequential 5-opt step instead. Auto, the default, is FiveOpt from
+// kFiveOptFrom holes and ThreeOpt below, each where it measured better
+// (resolve(), libaco/src/solve.cpp).
+enum class LocalSearch { None, TwoOpt, TwoOptOrOpt, ThreeOpt, FiveOpt, Auto };
 
 struct Progress {
   int iteration = 0;
@@ -34,7 +37,7 @@ struct Params {
   // The default is what measured best (docs/benchmarks.md): the focused colony
   // with 2-opt, Or-opt and 3-opt, ahead of whole-route ACS on every TSPLIB row measured.
   Algorithm algorithm = Algorithm::FocusedAcs;
-  LocalSearch local_search = LocalSearch::ThreeOpt;
+  LocalSearch local_search = LocalSearch::Auto;
   int ants = 0;             // 0: default for the algorithm and size
   int iterations = 0;       // 0: default; the run stops at whichever limit comes first
   double time_limit_s = 0;  // 0: none
