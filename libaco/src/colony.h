@@ -124,9 +124,11 @@ constexpr std::size_t kManyAntsFrom = 10000;
 // curve numbers made the first route 4.9 % longer (nearest neighbour, then
 // local search in windows), still 0.3 % after 40 s.
 constexpr std::size_t kCurveOrderFrom = 16384;
-// From this many holes --local-search auto (the default) is LKH's 5-opt
-// step; below, 3-opt with deeper steps (resolve() gives the measurements).
+// From kFiveOptFrom to kFiveOptTo holes --local-search auto (the default) is
+// LKH's 5-opt step; below and above, 3-opt with deeper steps (resolve()
+// gives the measurements).
 constexpr std::size_t kFiveOptFrom = 3000;
+constexpr std::size_t kFiveOptTo = 20000;
 constexpr double kJumpyOrder = 4.0;
 constexpr int kRestartAfter = 300;
 constexpr int kRestartKicks = 200;

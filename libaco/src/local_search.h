@@ -126,8 +126,9 @@ class alignas(64) LocalSearcher {
   bool five_opt_chain(HoleIndex t1, KOptMove step, double gain);
   // 5-opt steps a chain makes on trial before it gives up.
   static constexpr int kFiveOptSteps = 3;
-  static_assert(kMaxMoveK * (kFiveOptSteps + 1) <= FlipOverlay::kMaxFlips + kMaxMoveK,
-                "a chain's trial flips must mostly fit the overlay");
+  // A 5-opt move takes at most 5 flips (kopt_move_test); the closing one is
+  // made on the array, not in the overlay.
+  static_assert(kMaxMoveK * kFiveOptSteps <= FlipOverlay::kMaxFlips, "a chain's trial flips must fit the overlay");
   // How many 3-opt steps deepen() searches below the first. Before, the
   // deeper steps were 2-opt steps (six flips at most, the best of 5
   // neighbours at each). `acodrill tsp --threads 2`, median gap, that way ->

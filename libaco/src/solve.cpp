@@ -17,6 +17,7 @@ namespace aco {
 
 using detail::kCurveOrderFrom;
 using detail::kFiveOptFrom;
+using detail::kFiveOptTo;
 using detail::kJumpyOrder;
 using detail::kManyAntsFrom;
 using detail::uses_alpha_lists;
@@ -50,8 +51,8 @@ int focused_ants(std::size_t n) {
 
 Params resolve(const Params& in, std::size_t n) {
   Params p = in;
-  // LKH's 5-opt step (five_opt.cpp) from 3000 holes, 3-opt with deeper
-  // steps below. Two threads, whole process, gap to the optimum, 3-opt ->
+  // LKH's 5-opt step (five_opt.cpp) from 3000 to 20 000 holes, 3-opt with
+  // deeper steps below and above. Two threads, whole process, gap to the optimum, 3-opt ->
   // 5-opt (seeds 1-5 unless said; pcb3038 1-10, both run the same day):
   // pcb3038 at 15 s median 0.09 -> 0.07 %, fnl4461 at 20 s (seeds 1-3)
   // 0.103 -> 0.058 %, pla7397 at 91 s 0.071 -> 0.055 %, d15112 at 64 s
@@ -60,8 +61,15 @@ Params resolve(const Params& in, std::size_t n) {
   // 3-opt's (fl1400: 37 iterations in 5 s against 802) that the colony
   // lost more than the step found (seeds 1-3: d1291 at 5 s 0.00 -> 0.71 %,
   // fl1400 0.68 -> 1.01 %, pcb1173 0.00 -> 0.01 %, u724 at 2 s 0.05 ->
-  // 0.09 %; d493 at 1 s 0.21 -> 0.01 %).
-  if (p.local_search == LocalSearch::Auto) p.local_search = n >= kFiveOptFrom ? LocalSearch::FiveOpt : LocalSearch::ThreeOpt;
+  // 0.09 %; d493 at 1 s 0.21 -> 0.01 %). Above kFiveOptTo, 3-opt again:
+  // on five copies of pla7397 (36 985 holes, 60 s, seeds 1-3) 5-opt gave
+  // 0.394 0.325 0.575 % against 0.341 0.330 0.392 % (the scale table at
+  // c455ce2), though on uniform random holes it gained (33 000 at 30 s
+  // 0.66 -> 0.56 %, 100 000 at 60 s 0.65 -> 0.54 %, medians of 3); without
+  // the penalties it gave 0.225 0.485 0.292 % there, so they are the lead.
+  if (p.local_search == LocalSearch::Auto) {
+    p.local_search = n >= kFiveOptFrom && n <= kFiveOptTo ? LocalSearch::FiveOpt : LocalSearch::ThreeOpt;
+  }
   const bool focused = p.algorithm == Algorithm::FocusedAcs;
   // (Measured: ACS with local search beats this MMAS at every TSPLIB size we
   // benchmark, so ACS is the default algorithm; see Params.)
