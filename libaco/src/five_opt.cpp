@@ -29,6 +29,12 @@ constexpr double kEps = 1e-9;
 
 bool same_edge(HoleIndex a, HoleIndex b, HoleIndex c, HoleIndex d) { return (a == c && b == d) || (a == d && b == c); }
 
+// What edge (a, b) costs the search: its length, plus the ascent's penalties
+// of its ends where the candidates carry them.
+double penalised(const Space& space, const Candidates& cand, HoleIndex a, HoleIndex b) {
+  return cand.has_pi() ? space.d(a, b) + cand.pi[a] + cand.pi[b] : space.d(a, b);
+}
+
 bool holds(const std::vector<std::array<HoleIndex, 2>>& edges, HoleIndex a, HoleIndex b) {
   for (const auto& e : edges) {
     if (same_edge(a, b, e[0], e[1])) return true;
@@ -47,11 +53,7 @@ class KOptSearch {
       : space_(space), cand_(cand), tour_(tour), v_(v), breadth_(breadth), added_before_(added_before),
         removed_before_(removed_before) {}
 
-  // What edge (a, b) costs here: its length, plus the ascent's penalties of
-  // its ends where the candidates carry them.
-  double c(HoleIndex a, HoleIndex b) const {
-    return cand_.has_pi() ? space_.d(a, b) + cand_.pi[a] + cand_.pi[b] : space_.d(a, b);
-  }
+  double c(HoleIndex a, HoleIndex b) const { return penalised(space_, cand_, a, b); }
   // `gain`: c(t1, t2) plus what the chain's steps before gained.
   bool from(HoleIndex t1, HoleIndex t2, double gain) {
     t_[0] = t1;
@@ -60,8 +62,7 @@ class KOptSearch {
     return extend(1, gain);
   }
 
-  KOptMove found;
-  double found_gain = 0.0;  // what the found move gains, its closing paid
+  KOptMove found;  // the first move that closes with a gain
   KOptMove best;
   double best_gain = 0.0;  // the best step's partial gain, (t10, t1) not paid
 
@@ -89,7 +90,6 @@ class KOptSearch {
         const KOptMove m = move(i);
         if (kopt_feasible(tour_, m, nullptr)) {
           found = m;
-          found_gain = closed;
           return true;
         }
       }
@@ -156,14 +156,10 @@ bool LocalSearcher::try_five_opt(HoleIndex t1) {
   for (int dir = 0; dir < 2; ++dir) {
     const HoleIndex t2 = next(t1, dir);
     if (t2 == v) continue;
-    const double x1 = cand_.has_pi() ? space_.d(t1, t2) + cand_.pi[t1] + cand_.pi[t2] : space_.d(t1, t2);
-    if (first.from(t1, t2, x1)) {
+    if (first.from(t1, t2, penalised(space_, cand_, t1, t2))) {
       KOptFlips flips;
       kopt_feasible(tour, first.found, &flips);
-      for (int f = 0; f < flips.count; ++f) {
-        const FlipNodes& x = flips.flip[static_cast<std::size_t>(f)];
-        flip(x[0], x[1], x[2], x[3]);
-      }
+      make_flips(flips);
       gain_ += length_gain(space_, first.found);
       for (int i = 0; i < 2 * first.found.k; ++i) push(first.found.t[i]);
       return true;
@@ -171,6 +167,13 @@ bool LocalSearcher::try_five_opt(HoleIndex t1) {
   }
   if (first.best_gain <= kEps) return false;
   return five_opt_chain(t1, first.best, first.best_gain);
+}
+
+void LocalSearcher::make_flips(const KOptFlips& flips) {
+  for (int f = 0; f < flips.count; ++f) {
+    const FlipNodes& x = flips.flip[static_cast<std::size_t>(f)];
+    flip(x[0], x[1], x[2], x[3]);
+  }
 }
 
 bool LocalSearcher::five_opt_chain(HoleIndex t1, KOptMove step, double gain) {
@@ -238,10 +241,7 @@ bool LocalSearcher::five_opt_chain(HoleIndex t1, KOptMove step, double gain) {
           flip(x[0], x[1], x[2], x[3]);
         }
       }
-      for (int f = 0; f < last.count; ++f) {
-        const FlipNodes& x = last.flip[static_cast<std::size_t>(f)];
-        flip(x[0], x[1], x[2], x[3]);
-      }
+      make_flips(last);
       // The holes of every step, in order: the queue, and so the search
       // after, must not depend on where the trial flips were made.
       for (int s = 0; s <= searched; ++s) {

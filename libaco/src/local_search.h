@@ -124,6 +124,7 @@ class alignas(64) LocalSearcher {
   // did not gain (five_opt.cpp).
   bool try_five_opt(HoleIndex t1);
   bool five_opt_chain(HoleIndex t1, KOptMove step, double gain);
+  void make_flips(const KOptFlips& flips);  // on the array, in order
   // 5-opt steps a chain makes on trial before it gives up.
   static constexpr int kFiveOptSteps = 3;
   // A 5-opt move takes at most 5 flips (kopt_move_test); the closing one is
