@@ -15,7 +15,7 @@
 //
 // `--local-search 5opt` (and auto from kFiveOptFrom holes) runs it after
 // 2-opt and Or-opt, in place of the 3-opt step and its deeper steps
-// (local_search.cpp). docs/colony.md has its measurements.
+// (three_opt.cpp). docs/colony.md has its measurements.
 #include <algorithm>
 
 #include "kopt_move.h"
@@ -24,8 +24,6 @@
 namespace aco::detail {
 
 namespace {
-
-constexpr double kEps = 1e-9;
 
 bool same_edge(HoleIndex a, HoleIndex b, HoleIndex c, HoleIndex d) { return (a == c && b == d) || (a == d && b == c); }
 
@@ -86,7 +84,7 @@ class KOptSearch {
     const HoleIndex last = t_[2 * i - 1];
     if (i >= 2) {
       const double closed = g - c(last, t_[0]);
-      if (closed > kEps && !neighbours(last, t_[0]) && !holds(removed_before_, last, t_[0])) {
+      if (closed > kMinGain && !neighbours(last, t_[0]) && !holds(removed_before_, last, t_[0])) {
         const KOptMove m = move(i);
         if (kopt_feasible(tour_, m, nullptr)) {
           found = m;
@@ -95,7 +93,7 @@ class KOptSearch {
       }
     }
     if (i == kMaxMoveK) {
-      if (g > best_gain + kEps && !neighbours(last, t_[0]) && !holds(removed_before_, last, t_[0])) {
+      if (g > best_gain + kMinGain && !neighbours(last, t_[0]) && !holds(removed_before_, last, t_[0])) {
         const KOptMove m = move(i);
         if (kopt_feasible(tour_, m, nullptr)) {
           best = m;
@@ -110,7 +108,7 @@ class KOptSearch {
     for (int r = 0; r < breadth_; ++r) {
       const HoleIndex a = nbr[r];
       const double g1 = g - nbr_length[r];
-      if (g1 <= kEps) break;  // rows are sorted by cost: no later one passes
+      if (g1 <= kMinGain) break;  // rows are sorted by cost: no later one passes
       if (a == v_ || a == t_[0] || neighbours(last, a) || holds(removed_before_, last, a)) continue;
       for (int side = 0; side < 2; ++side) {
         const HoleIndex b = tour_.next(a, side ^ dir_);  // read from t1 to t2: the same either way the route is stored
@@ -165,7 +163,7 @@ bool LocalSearcher::try_five_opt(HoleIndex t1) {
       return true;
     }
   }
-  if (first.best_gain <= kEps) return false;
+  if (first.best_gain <= kMinGain) return false;
   return five_opt_chain(t1, first.best, first.best_gain);
 }
 
@@ -251,7 +249,7 @@ bool LocalSearcher::five_opt_chain(HoleIndex t1, KOptMove step, double gain) {
       gain_ += made + length_gain(space_, found);
       return true;
     }
-    if (deeper_gain <= kEps) break;
+    if (deeper_gain <= kMinGain) break;
     step = deeper;
     gain = deeper_gain;
   }

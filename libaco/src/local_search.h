@@ -1,7 +1,9 @@
 #pragma once
 // 2-opt, Or-opt and 3-opt with Lin-Kernighan's deeper steps on an array route
 // with neighbour lists and don't-look bits (Bentley 1992; Johnson & McGeoch
-// 1997, "The TSP: a case study in local optimization"). The route is a cycle over Space::route_size() nodes whose
+// 1997, "The TSP: a case study in local optimization"), or LKH's 5-opt step
+// in place of the 3-opt: local_search.cpp (the queue, 2-opt, Or-opt and the
+// route's flips), three_opt.cpp and five_opt.cpp. The route is a cycle over Space::route_size() nodes whose
 // position 0 never moves, so an open path's virtual node V keeps its place and
 // its direction-dependent edges stay right.
 #include <array>
@@ -14,6 +16,10 @@
 #include "space.h"
 
 namespace aco::detail {
+
+// A move must gain more than this to be taken: rounding noise must not make
+// two equal-length routes swap forever.
+inline constexpr double kMinGain = 1e-9;
 
 // Which moves a search tries at each hole, each set adding to the one before.
 enum class Moves {
@@ -118,7 +124,7 @@ class alignas(64) LocalSearcher {
     std::size_t position(HoleIndex x) const { return s.pos_[x]; }
     std::size_t size() const { return s.m_; }
   };
-  // From a step three_opt_step left: makes it and searches on (see the .cpp).
+  // From a step three_opt_step left: makes it and searches on (three_opt.cpp).
   bool deepen(HoleIndex t1, Step step);
   // LKH's sequential 5-opt step from t1, and its chain from a step that
   // did not gain (five_opt.cpp).
