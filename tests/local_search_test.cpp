@@ -351,6 +351,14 @@ TEST(local_search_test, five_opt_on_penalised_costs_shortens_three_opt_optima) {
           }
         }
       }
+      if (seed == 1) {
+        // Not asked for (a colony whose search is not 5-opt): the same lists, without the penalised rows.
+        const aco::detail::Candidates bare = aco::detail::alpha_candidates(space, nearest, 5, 30, 1, false);
+        EXPECT_EQ(bare.list, cand.list);
+        EXPECT_EQ(bare.length, cand.length);
+        EXPECT_FALSE(bare.has_pi());
+        EXPECT_TRUE(bare.pi_list.empty() && bare.pi_length.empty());
+      }
       std::vector<HoleIndex> route = start_route(space, p, 2);
       aco::detail::LocalSearcher ls(space, cand);
       ls.audit(true);

@@ -22,7 +22,8 @@ constexpr int kMaxParts = 8;
 
 }  // namespace
 
-Candidates alpha_candidates(const Space& space, const Candidates& nearest, int k, int ascent_iterations, Team& team) {
+Candidates alpha_candidates(const Space& space, const Candidates& nearest, int k, int ascent_iterations, Team& team,
+                            bool penalised_rows) {
   const int threads = team.threads();
   const HoleIndex n = space.holes();
   Candidates out;
@@ -30,8 +31,10 @@ Candidates alpha_candidates(const Space& space, const Candidates& nearest, int k
   out.list.assign(static_cast<std::size_t>(n) * out.k, 0);
   out.length.assign(out.list.size(), 0.0);
   if (out.k == 0) return out;
-  out.pi_list.assign(out.list.size(), 0);
-  out.pi_length.assign(out.list.size(), 0.0);
+  if (penalised_rows) {
+    out.pi_list.assign(out.list.size(), 0);
+    out.pi_length.assign(out.list.size(), 0.0);
+  }
   // The neighbour graph, each edge once.
   std::vector<SpanningForest::Edge> graph;
   {
@@ -188,6 +191,7 @@ Candidates alpha_candidates(const Space& space, const Candidates& nearest, int k
         o[r] = nr[row[r].second];
         o_length[r] = space.d(i, o[r]);
       }
+      if (!penalised_rows) continue;
       row.clear();
       for (int r = 0; r < out.k; ++r) row.push_back({o_length[r] + pi[i] + pi[o[r]], r});
       std::stable_sort(row.begin(), row.end());
@@ -198,13 +202,14 @@ Candidates alpha_candidates(const Space& space, const Candidates& nearest, int k
       }
     }
   });
-  out.pi = std::move(pi);
+  if (penalised_rows) out.pi = std::move(pi);
   return out;
 }
 
-Candidates alpha_candidates(const Space& space, const Candidates& nearest, int k, int ascent_iterations, int threads) {
+Candidates alpha_candidates(const Space& space, const Candidates& nearest, int k, int ascent_iterations, int threads,
+                            bool penalised_rows) {
   Candidates c;
-  Team::run(threads, [&](Team& team) { c = alpha_candidates(space, nearest, k, ascent_iterations, team); });
+  Team::run(threads, [&](Team& team) { c = alpha_candidates(space, nearest, k, ascent_iterations, team, penalised_rows); });
   return c;
 }
 

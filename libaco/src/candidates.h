@@ -27,7 +27,7 @@ struct Candidates {
   // distance computed there each time, the same routes took 10-14 % longer
   // (brd14051, d15112, pcb3038, pla7397). Every builder below fills it.
   std::vector<double> length;
-  // Filled by alpha_candidates only: the ascent's penalties, and the same rows
+  // Filled by alpha_candidates only, when asked: the ascent's penalties, and the same rows
   // sorted by the costs they give, c(i, j) = d(i, j) + pi[i] + pi[j], with
   // those costs beside them. LKH's 5-opt step pays its gains in these
   // (five_opt.cpp): a whole tour's cost only moves by 2 sum(pi), but a
@@ -81,8 +81,12 @@ std::vector<std::pair<HoleIndex, HoleIndex>> candidate_edges(const Candidates& c
 // trees, an edge between two of them has alpha 0. Memory O(n k + n log n).
 // `nearest`'s lengths are not read (the caller may drop them first).
 // `threads` workers grow each step's tree (one part of the holes each, then
-// joined) and fill the rows; any count gives the same lists.
-Candidates alpha_candidates(const Space& space, const Candidates& nearest, int k, int ascent_iterations, int threads = 1);
-Candidates alpha_candidates(const Space& space, const Candidates& nearest, int k, int ascent_iterations, Team& team);
+// joined) and fill the rows; any count gives the same lists. With
+// `penalised_rows` it keeps pi and the rows sorted by penalised cost, which
+// only the 5-opt step reads (6 MB at 100 000 holes).
+Candidates alpha_candidates(const Space& space, const Candidates& nearest, int k, int ascent_iterations, int threads = 1,
+                            bool penalised_rows = true);
+Candidates alpha_candidates(const Space& space, const Candidates& nearest, int k, int ascent_iterations, Team& team,
+                            bool penalised_rows);
 
 }  // namespace aco::detail

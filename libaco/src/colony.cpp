@@ -13,13 +13,8 @@ Colony::Colony(const Problem& problem, const Params& params, Team& team, const C
   } else if (uses_alpha_lists(n_, p_.local_search)) {
     Candidates nearest = detail::joined_nearest(space_, kAlphaFrom, team_);
     std::vector<double>().swap(nearest.length);  // not read by alpha_candidates: 13 MB less at 100 000 holes
-    cand_ = detail::alpha_candidates(space_, nearest, p_.candidates, ascent_iterations(n_, p_.time_limit_s), team_);
-    if (p_.local_search != LocalSearch::FiveOpt) {
-      // Only the 5-opt step reads the penalised rows: 6 MB at 100 000 holes.
-      std::vector<HoleIndex>().swap(cand_.pi_list);
-      std::vector<double>().swap(cand_.pi_length);
-      std::vector<double>().swap(cand_.pi);
-    }
+    cand_ = detail::alpha_candidates(space_, nearest, p_.candidates, ascent_iterations(n_, p_.time_limit_s), team_,
+                                     p_.local_search == LocalSearch::FiveOpt);
   } else {
     cand_ = detail::build_candidates(space_, p_.candidates, team_);
   }

@@ -167,13 +167,6 @@ bool LocalSearcher::try_five_opt(HoleIndex t1) {
   return five_opt_chain(t1, first.best, first.best_gain);
 }
 
-void LocalSearcher::make_flips(const KOptFlips& flips) {
-  for (int f = 0; f < flips.count; ++f) {
-    const FlipNodes& x = flips.flip[static_cast<std::size_t>(f)];
-    flip(x[0], x[1], x[2], x[3]);
-  }
-}
-
 bool LocalSearcher::five_opt_chain(HoleIndex t1, KOptMove step, double gain) {
   // As deepen(): trial flips on the array while short, from the first long
   // one on in trial_; only a chain that closes with a gain reaches the array.
@@ -233,12 +226,7 @@ bool LocalSearcher::five_opt_chain(HoleIndex t1, KOptMove step, double gain) {
       KOptFlips last;
       flips_of(found, last);
       // The chain's trial flips, then the closing move, made on the array.
-      if (overlaid) {
-        for (int f = 0; f < trial_.flips(); ++f) {
-          const auto& x = trial_.flip_at(f);
-          flip(x[0], x[1], x[2], x[3]);
-        }
-      }
+      if (overlaid) make_trial_flips();
       make_flips(last);
       // The holes of every step, in order: the queue, and so the search
       // after, must not depend on where the trial flips were made.
@@ -253,7 +241,7 @@ bool LocalSearcher::five_opt_chain(HoleIndex t1, KOptMove step, double gain) {
     step = deeper;
     gain = deeper_gain;
   }
-  for (auto f = flips_.rbegin(); f != flips_.rend(); ++f) flip((*f)[0], (*f)[2], (*f)[1], (*f)[3]);
+  undo_array_flips();
   return false;
 }
 

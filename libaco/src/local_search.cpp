@@ -235,6 +235,25 @@ std::size_t LocalSearcher::flip_length(HoleIndex a, HoleIndex b, HoleIndex c, Ho
   return !space_.open() && !windowed_ ? std::min(inner, m_ - inner) : inner;
 }
 
+void LocalSearcher::make_flips(const KOptFlips& flips) {
+  for (int f = 0; f < flips.count; ++f) {
+    const FlipNodes& x = flips.flip[static_cast<std::size_t>(f)];
+    flip(x[0], x[1], x[2], x[3]);
+  }
+}
+
+void LocalSearcher::make_trial_flips() {
+  for (int f = 0; f < trial_.flips(); ++f) {
+    const auto& x = trial_.flip_at(f);
+    flip(x[0], x[1], x[2], x[3]);
+  }
+}
+
+void LocalSearcher::undo_array_flips() {
+  // flip(a, c, b, d) undoes flip(a, b, c, d).
+  for (auto f = flips_.rbegin(); f != flips_.rend(); ++f) flip((*f)[0], (*f)[2], (*f)[1], (*f)[3]);
+}
+
 void LocalSearcher::load(std::vector<HoleIndex>& route) {
   // Taken, not copied, and given back by unload(): two copies of the route
   // an ant, 0.4 MB each at 100 000 holes.

@@ -131,6 +131,11 @@ class alignas(64) LocalSearcher {
   bool try_five_opt(HoleIndex t1);
   bool five_opt_chain(HoleIndex t1, KOptMove step, double gain);
   void make_flips(const KOptFlips& flips);  // on the array, in order
+  // A chain's trial flips (deepen(), five_opt_chain()): those made in trial_
+  // made again on the array, in order, once the chain gains; or, when it
+  // does not, those made on the array (flips_) undone, last first.
+  void make_trial_flips();
+  void undo_array_flips();
   // 5-opt steps a chain makes on trial before it gives up.
   static constexpr int kFiveOptSteps = 3;
   // A 5-opt move takes at most 5 flips (kopt_move_test); the closing one is

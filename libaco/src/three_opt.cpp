@@ -164,12 +164,7 @@ bool LocalSearcher::deepen(HoleIndex t1, Step step) {
     ArrayTour tour{*this};
     if (overlaid ? three_opt_step(trial_, t1, dir, step.gain, &deeper, 1, breadth)
                  : three_opt_step(tour, t1, dir, step.gain, &deeper, 1, breadth)) {
-      if (overlaid) {
-        for (int f = 0; f < trial_.flips(); ++f) {
-          const auto& x = trial_.flip_at(f);
-          flip(x[0], x[1], x[2], x[3]);
-        }
-      }
+      if (overlaid) make_trial_flips();
       for (const auto& f : flips_) {
         for (HoleIndex x : f) push(x);
       }
@@ -181,9 +176,8 @@ bool LocalSearcher::deepen(HoleIndex t1, Step step) {
     if (deeper.gain <= kMinGain) break;
     step = deeper;
   }
-  // Nothing closed with a gain: trial_ is dropped, the array's flips undone
-  // (flip(a, c, b, d) undoes flip(a, b, c, d)).
-  for (auto f = flips_.rbegin(); f != flips_.rend(); ++f) flip((*f)[0], (*f)[2], (*f)[1], (*f)[3]);
+  // Nothing closed with a gain: trial_ is dropped, the array's flips undone.
+  undo_array_flips();
   return false;
 }
 
