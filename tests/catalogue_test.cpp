@@ -141,7 +141,7 @@ std::vector<BadCase> catalogue() {
       {"program_other_axis", "a.nc", "G21\nG0 X1 Y1 Z5\nG0 A90\nG81 R1 Z-1 F100\nM30\n", "plan {in} -o {out}", "a.nc:3: the A axis"},
       {"program_g92", "a.nc", "G21\nG92 X0 Y0\nG0 X1 Y1 Z5\nG81 R1 Z-1 F100\nM30\n", "plan {in} -o {out}", "a.nc:2: G92 changes the coordinate system"},
       {"program_plane", "a.nc", "G21 G18\nG0 X1 Y1 Z5\nG81 R1 Z-1 F100\nM30\n", "plan {in} -o {out}", "a.nc:1: another plane (G18)"},
-      {"program_repeats", "a.nc", "G21\nG0 X1 Y1 Z5\nG91 G81 X2 R-4 Z-2 L5 F100\nM30\n", "plan {in} -o {out}", "a.nc:3: L repeats a cycle"},
+      {"program_repeats", "a.nc", "G21\nG0 X1 Y1 Z5\nG81 X2 R1 Z-2 L5 F100\nM30\n", "plan {in} -o {out}", "a.nc:3: L5 in absolute mode (G90) drills one place 5 times"},
       {"program_no_holes", "a.nc", "G21\nG0 X1 Y1 Z5\nG0 Z1\nM30\n", "plan {in} -o {out}", "no holes"},
       {"program_origin", "a.nc", "G21\nG0 X1 Y1 Z5\nG81 R1 Z-1 F100\nM30\n", "plan {in} -o {out} --origin center", "--origin: a program's coordinates stay"},
       {"program_keep_style_units", "a.nc", "G21\nG0 X1 Y1 Z5\nG81 R1 Z-1 F100\nM30\n", "plan {in} -o {out} --keep-style --units inch", "--keep-style keeps the input's units"},

@@ -13,8 +13,10 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <sstream>
 
@@ -369,6 +371,39 @@ std::string drill_map_line(const planning::DrillMapping& d) {
          (std::fabs(over) < 0.0005 ? std::string("EXACT") : (over > 0 ? "+" : "") + gcode::format_number(over, 3) + " MM");
 }
 
+// Issue 72: the program plan is about to write, read back as verify reads
+// it, must drill what plan read; one that does not is never written (exit 3:
+// the fault is acodrill's, not the input's).
+void check_own_program(const std::vector<std::string>& faults, const std::string& output) {
+  if (faults.empty()) return;
+  throw aco::InternalError("the program for " + (output == "-" ? std::string("<stdout>") : output) + " fails acodrill's own check (" +
+                           std::to_string(faults.size()) + " fault" + (faults.size() == 1 ? "" : "s") + ", first: " +
+                           faults.front() + "); nothing was written. This is a fault in acodrill, not in the input: please report it");
+}
+
+// A test hook, and only that: ACODRILL_TEST_BREAK_WRITER=1 drops the last
+// line that moves to a hole in a cycle ("X... Y...", "N4 X... Y...") before
+// the check, so a test can see a faulty program refused and no file written.
+std::string broken_for_test(std::string text) {
+  const char* flag = std::getenv("ACODRILL_TEST_BREAK_WRITER");
+  if (!flag || std::string(flag) != "1") return text;
+  std::size_t end = text.size();
+  while (end > 0) {
+    const std::size_t start = text.rfind('\n', end - 1) == std::string::npos ? 0 : text.rfind('\n', end - 1) + 1;
+    std::size_t code = start;
+    if (code < end && text[code] == 'N') {
+      code = text.find(' ', code);
+      code = code == std::string::npos || code > end ? end : code + 1;
+    }
+    if (code < end && text[code] == 'X') {
+      text.erase(start, text.find('\n', start) - start + 1);
+      break;
+    }
+    end = start == 0 ? 0 : start - 1;
+  }
+  return text;
+}
+
 // Writes the program and every asked-for output (each complete or not at
 // all), then the summary on stderr.
 int finish_plan(const PlanArgs& a, const std::string& program_text, const aco::HoleSet& holes, const planning::PlanResult& plan,
@@ -538,13 +573,37 @@ int plan_program(const PlanArgs& a, planning::PlanOptions o, const app::LoadedHo
   } catch (const gcode::ProgramError& e) {
     throw app::UserError(source, e.line(), e.what());
   }
+  const std::string program_text = broken_for_test(program.str());
+  check_own_program(app::self_check(program_text, input), a.output);
   planning::Placement placement;
   placement.origin = planning::Origin{planning::OriginKind::Drawing, {}};
   placement.extent = planning::extent_of(r.holes);
   app::ReportContext ctx{source, a.output, placement, loaded.name, &loaded, {}, 1, 1, std::nullopt};
   ctx.program_input = app::ReportContext::ProgramInput{r.plan.groups.size(), r.overlapping_holes, r.overlap_groups,
                                                        a.keep_style ? "keep" : "dialect"};
-  return finish_plan(a, program.str(), r.holes, r.plan, o, ctx, planning::to_passes(r.holes, r.plan, o.machine));
+  return finish_plan(a, program_text, r.holes, r.plan, o, ctx, planning::to_passes(r.holes, r.plan, o.machine));
+}
+
+// The holes a program resumed at hole `resume_from` makes: all of them,
+// less those its passes leave out (matched by place and pass).
+aco::HoleSet holes_written(const aco::HoleSet& holes, const std::vector<gcode::ToolPass>& passes, std::size_t resume_from) {
+  if (resume_from <= 1) return holes;
+  std::map<std::pair<long long, long long>, std::size_t> left_out;  // place (µm) -> holes there not made
+  auto key = [](aco::Point2 p) { return std::make_pair(std::llround(p.x * 1000.0), std::llround(p.y * 1000.0)); };
+  for (const gcode::ToolPass& p : passes) {
+    const std::size_t first = gcode::first_written(p, resume_from);
+    for (std::size_t i = 0; i < first; ++i) ++left_out[key(p.holes[i])];
+  }
+  aco::HoleSet out;
+  for (const aco::Hole& h : holes) {
+    auto it = left_out.find(key(h.center));
+    if (it != left_out.end() && it->second > 0) {
+      --it->second;
+      continue;
+    }
+    out.push_back(h);
+  }
+  return out;
 }
 
 int cmd_plan(const PlanArgs& a, const SolverArgs& s, const InputArgs& in_args) {
@@ -713,11 +772,16 @@ int cmd_plan(const PlanArgs& a, const SolverArgs& s, const InputArgs& in_args) {
     throw app::UserError(e.what());
   }
 
+  const std::string program_text = broken_for_test(program.str());
+  check_own_program(app::self_check(program_text, holes_written(loaded.holes, passes, a.resume_from),
+                                    o.tools ? app::tooling_of_table(*o.tools) : o.tooling),
+                    a.output);
+
   app::ReportContext ctx{source, a.output, placement, loaded.name, &loaded, {}, 1, 1, std::nullopt};
   for (const app::Job::Source& src : job.sources) ctx.sources.push_back({src.file, src.holes});
   ctx.panel_copies = copies;
   ctx.batch = a.batch;
-  return finish_plan(a, program.str(), loaded.holes, plan, o, ctx, passes, &job);
+  return finish_plan(a, program_text, loaded.holes, plan, o, ctx, passes, &job);
 }
 
 int cmd_tsp(const std::string& input, const std::string& tour, const SolverArgs& s, bool quiet) {

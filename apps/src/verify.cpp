@@ -76,9 +76,17 @@ std::vector<std::string> check_drilled(const gcode::Interpretation& run, const a
       for (std::size_t m : matches) used[m] = 1;
       continue;
     }
-    if (same_tool.size() > 1) faults.push_back("hole " + at + " is drilled " + std::to_string(same_tool.size()) + " times");
-    for (std::size_t m : same_tool) used[m] = 1;
-    const auto& d = run.holes[same_tool.front()];
+    // One drilled hole for one input hole: input holes closer than the
+    // printed precision (distinct in the input, one place in the program)
+    // each take one; a drilled hole left over is a hole drilled again.
+    auto free = std::find_if(same_tool.begin(), same_tool.end(), [&](std::size_t m) { return !used[m]; });
+    if (free == same_tool.end()) {
+      faults.push_back("hole " + at + " D" + gcode::format_number(h.diameter, 3) + " is not drilled (line " +
+                       std::to_string(run.holes[same_tool.front()].line) + " drills the hole beside it)");
+      continue;
+    }
+    used[*free] = 1;
+    const auto& d = run.holes[*free];
     const long long key = std::llround(h.diameter * 1000.0);
     auto [it, inserted] = tool_of_diameter.emplace(key, d.tool);
     // Two tools for one diameter: sister tools (a worn drill replaced) when
@@ -89,12 +97,27 @@ std::vector<std::string> check_drilled(const gcode::Interpretation& run, const a
                        std::to_string(it->second) + " and T" + std::to_string(d.tool));
     }
   }
+  std::multimap<std::pair<long long, long long>, std::size_t> expected_grid;
+  if (std::count(used.begin(), used.end(), 0) > 0) {
+    for (std::size_t k = 0; k < expected.size(); ++k) expected_grid.emplace(cell(expected[k].center.x, expected[k].center.y), k);
+  }
   for (std::size_t i = 0; i < run.holes.size(); ++i) {
-    if (!used[i]) {
-      faults.push_back("line " + std::to_string(run.holes[i].line) + " drills (" +
-                       gcode::format_number(run.holes[i].x_mm, 3) + ", " + gcode::format_number(run.holes[i].y_mm, 3) +
-                       "), which is not an input hole");
+    if (used[i]) continue;
+    const auto& d = run.holes[i];
+    const std::string at = "(" + gcode::format_number(d.x_mm, 3) + ", " + gcode::format_number(d.y_mm, 3) + ")";
+    bool again = false;
+    const auto [cx, cy] = cell(d.x_mm, d.y_mm);
+    for (long long dx = -1; dx <= 1 && !again; ++dx) {
+      for (long long dy = -1; dy <= 1 && !again; ++dy) {
+        auto range = expected_grid.equal_range({cx + dx, cy + dy});
+        for (auto it = range.first; it != range.second && !again; ++it) {
+          const aco::Point2 c = expected[it->second].center;
+          again = std::fabs(d.x_mm - c.x) <= tol && std::fabs(d.y_mm - c.y) <= tol;
+        }
+      }
     }
+    faults.push_back(again ? "hole " + at + " is drilled again (line " + std::to_string(run.holes[i].line) + ")"
+                           : "line " + std::to_string(run.holes[i].line) + " drills " + at + ", which is not an input hole");
   }
   return faults;
 }
@@ -150,6 +173,41 @@ std::vector<std::string> check_same_holes(const gcode::Interpretation& run, cons
     if (!used[i]) faults.push_back("line " + std::to_string(got[i].line) + " drills " + at(got[i]) + ", which the input program does not");
   }
   return faults;
+}
+
+planning::Tooling tooling_of_table(const planning::ToolTable& table) {
+  planning::Tooling t;
+  for (const planning::ToolTableEntry& e : table.entries) {
+    const double d = e.tool.diameter_mm;
+    if (e.tool.end_mill) {
+      t.end_mill_mm = d;
+      continue;
+    }
+    if (!e.takes_mm.empty()) {
+      for (double hole : e.takes_mm) t.drills.push_back({d, std::max(0.0, d - hole) + 0.0005, std::max(0.0, hole - d) + 0.0005});
+      continue;
+    }
+    // fits(hole): d >= hole - minus and d <= hole + plus, for hole in [min, max].
+    t.drills.push_back({d, std::max(0.0, e.max_hole_mm - d), std::max(0.0, d - e.min_hole_mm)});
+  }
+  return t;
+}
+
+std::vector<std::string> self_check(const std::string& program_text, const aco::HoleSet& expected,
+                                    const planning::Tooling& tooling) {
+  try {
+    return check_drilled(gcode::interpret(program_text), expected, tooling);
+  } catch (const gcode::ProgramError& e) {
+    return {"the program does not read back: line " + std::to_string(e.line()) + ": " + e.what()};
+  }
+}
+
+std::vector<std::string> self_check(const std::string& program_text, const gcode::DrillingProgram& input) {
+  try {
+    return check_same_holes(gcode::interpret(program_text), input);
+  } catch (const gcode::ProgramError& e) {
+    return {"the program does not read back: line " + std::to_string(e.line()) + ": " + e.what()};
+  }
 }
 
 }  // namespace app

@@ -29,6 +29,17 @@ struct Word {
 
 bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
 
+// G-codes (times ten: G91.1 is 911) that do not change where or how a hole
+// is made: planes, compensation and offsets cancelled, exact stop and path
+// modes, look-ahead and smoothing (Fanuc G5.1, G8; HAAS G103, G187), spindle
+// speed modes and limits (G50, G96, G97), arc centre modes, rotation,
+// scaling and polar coordinates cancelled (G69, G50.1, G15). Every other G
+// word a reordered program would have to model is refused by name.
+bool harmless_g(int code) {
+  static const int known[] = {51, 80, 90, 150, 170, 400, 490, 500, 501, 610, 611, 640, 690, 901, 911, 960, 970, 1030, 1870};
+  return std::find(std::begin(known), std::end(known), code) != std::end(known);
+}
+
 std::string_view trim(std::string_view s) {
   while (!s.empty() && is_blank(s.front())) s.remove_prefix(1);
   while (!s.empty() && is_blank(s.back())) s.remove_suffix(1);
@@ -307,6 +318,7 @@ class Reader {
     std::optional<std::string> wp;
     std::string extra;
     std::optional<Motion> motion;
+    std::optional<Word> k_word, l_word;
     int cycle_code = 0;
     bool g43 = false;
     std::optional<int> h_word;
@@ -331,8 +343,8 @@ class Reader {
             case 180: case 190: if (options_.drilling_only) refuse("another plane (G" + w.text + ")"); break;
             case 200: inch_ = true; break;
             case 210: inch_ = false; break;
-            case 900: absolute_ = true; break;
-            case 910: absolute_ = false; break;
+            case 900: absolute_ = true; out_.incremental_from.push_back({lineno_, false}); break;
+            case 910: absolute_ = false; out_.incremental_from.push_back({lineno_, true}); break;
             case 940: break;
             case 950: if (options_.drilling_only) refuse("feed per revolution (G95); post it with G94"); break;
             case 980: retract_initial_ = true; break;
@@ -340,8 +352,13 @@ class Reader {
             case 530: machine = true; break;
             case 280: case 300: home = true; break;
             case 540: case 550: case 560: case 570: case 580: case 590: work_offset_ = code / 10; break;
-            case 100: case 520: case 920: case 510: case 680:
+            case 100: case 520: case 920: case 921: case 922: case 923: case 510: case 511: case 680: case 682:
               if (options_.drilling_only) refuse("G" + w.text + " changes the coordinate system");
+              break;
+            case 160: if (options_.drilling_only) refuse("G" + w.text + " polar coordinates (X the radius, Y the angle)"); break;
+            case 70: case 71: case 700: case 710: case 720:
+              // HAAS G70-G72 drill a bolt-hole pattern from one block; G7 and G7.1 change what X means.
+              if (options_.drilling_only) refuse("G" + w.text + " (a hole pattern or another reading of X and Y) is not one acodrill models; write each hole");
               break;
             case 430: g43 = true; break;
             case 490: length_offset_ = 0; break;
@@ -350,7 +367,10 @@ class Reader {
             case 760: if (options_.drilling_only) refuse("G76 (threading or fine boring)"); break;
             default:
               if (code >= 382 && code <= 385 && options_.drilling_only) refuse("probing (G" + w.text + ")");
-              break;  // G17, G40, G43, G49, G61, G64, G91.1 ...: no effect on where holes land
+              if (options_.drilling_only && !harmless_g(code)) {
+                refuse("G" + w.text + " is not a G-code acodrill models; it may change where or how holes are made");
+              }
+              break;
           }
           break;
         case 'M':
@@ -390,14 +410,13 @@ class Reader {
           selected_tool_ = t;
           break;
         }
-        case 'I': case 'J': case 'K': case 'E':
+        case 'I': case 'J': case 'E':
           if (w.letter == 'I') wi = w.value * scale();
           if (w.letter == 'J') wj = w.value * scale();
           extra += (extra.empty() ? "" : " ") + std::string(1, w.letter) + w.text;
           break;
-        case 'L':
-          if (options_.drilling_only && std::lround(w.value) != 1) refuse("L repeats a cycle; write each hole");
-          break;
+        case 'K': k_word = w; break;
+        case 'L': l_word = w; break;
         case 'A': case 'B': case 'C': case 'U': case 'V': case 'W':
           if (options_.drilling_only) refuse(std::string("the ") + w.letter + " axis");
           break;
@@ -455,8 +474,24 @@ class Reader {
       return;
     }
     const aco::Point2 to{wx ? (absolute_ ? *wx : xy_.x + *wx) : xy_.x, wy ? (absolute_ ? *wy : xy_.y + *wy) : xy_.y};
+    // K: HAAS's least peck beside I and J (G83, G73); anywhere else in a
+    // cycle, like L, how many times the block drills (Fanuc, HAAS, LinuxCNC).
+    const bool peck_k = k_word && (motion_ == Motion::Cycle || motion == Motion::Cycle) && (wi || wj) &&
+                        (cycle_.code == 83 || cycle_.code == 73 || cycle_code == 83 || cycle_code == 73);
+    if (k_word && (peck_k || motion_ != Motion::Cycle)) {
+      if (peck_k) extra += (extra.empty() ? "" : " ") + std::string("K") + k_word->text;
+      k_word.reset();  // outside a cycle: an arc's centre in another plane, refused there
+    }
     if (motion_ == Motion::Cycle) {
-      cycle_block(wx || wy || wz || motion.has_value(), to, wz, wr, wq, wp, extra);
+      const int repeats = cycle_repeats(k_word, l_word);
+      const bool drills = (wx || wy || wz || motion.has_value()) && repeats > 0;
+      aco::Point2 at = to;
+      cycle_block(drills, at, wz, wr, wq, wp, extra);
+      // Each further repeat moves by the block's X and Y steps (G91) first.
+      for (int k = 1; drills && k < repeats; ++k) {
+        at = {at.x + wx.value_or(0.0), at.y + wy.value_or(0.0)};
+        cycle_block(true, at, std::nullopt, std::nullopt, std::nullopt, std::nullopt, std::string());
+      }
     } else if (motion_ == Motion::Arc) {
       arc(to, wz, {wi.value_or(0.0), wj.value_or(0.0)});
     } else {
@@ -465,6 +500,24 @@ class Reader {
       move(to, wz);
     }
     stopped(stop);
+  }
+
+  // How many times a cycle block drills: its K or L word (1 without).
+  // Repeats move by the block's X and Y steps, so in G90 they would drill
+  // one place again and again: refused there, expanded in G91.
+  int cycle_repeats(const std::optional<Word>& k, const std::optional<Word>& l) {
+    if (k && l) throw ProgramError(lineno_, "both K and L repeat the cycle; give one");
+    const std::optional<Word>& w = k ? k : l;
+    if (!w) return 1;
+    if (w->value < 0 || w->value > 9999 || w->value != std::floor(w->value)) {
+      throw ProgramError(lineno_, std::string(1, w->letter) + w->text + ": a cycle's repeat count is a whole number from 0 to 9999");
+    }
+    const int n = static_cast<int>(w->value);
+    if (n > 1 && absolute_ && options_.drilling_only) {
+      refuse(std::string(1, w->letter) + w->text + " in absolute mode (G90) drills one place " + w->text +
+             " times; write each hole");
+    }
+    return n;
   }
 
   void stopped(bool stop) {
@@ -763,6 +816,15 @@ double HoleCycle::bottom_mm() const {
 bool HoleCycle::same_words(const HoleCycle& o) const {
   return code == o.code && z_mm == o.z_mm && r_mm == o.r_mm && q_mm == o.q_mm && p == o.p && feed_mm_min == o.feed_mm_min &&
          extra == o.extra && rigid == o.rigid;
+}
+
+bool DrillingProgram::incremental_after(std::uint32_t line) const {
+  bool incremental = false;
+  for (const auto& [at, mode] : incremental_from) {
+    if (at > line) break;
+    incremental = mode;
+  }
+  return incremental;
 }
 
 std::size_t DrillingProgram::hole_count() const {

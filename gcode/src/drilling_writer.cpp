@@ -3,6 +3,7 @@
 // the plane the spindle crosses between holes, chosen so that no reordered
 // move runs lower than the input ever travelled over that run's holes.
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -71,7 +72,12 @@ class Writer {
   const char* rapid() const { return two_digit_ ? "G00" : "G0"; }
   const char* feed() const { return two_digit_ ? "G01" : "G1"; }
 
-  void line(const std::string& text) { out_ << text << '\n'; }
+  void line(const std::string& text) {
+    out_ << prefix_ << text << '\n';
+    prefix_.clear();
+  }
+  // Words the next line written starts with ("G90 ": the mode its coordinates are in).
+  void prefix_next(std::string words) { prefix_ = std::move(words); }
 
   std::string z_home() const { return z_home_block(s_.dialect); }
 
@@ -142,6 +148,7 @@ class Writer {
   std::ostream& out_;
   const DrillingWriteSettings& s_;
   bool two_digit_ = true;
+  std::string prefix_;
 };
 
 void write_dialect(std::ostream& out, const DrillingProgram& p, const DrillingWriteSettings& s) {
@@ -247,6 +254,54 @@ bool hole_making_only(std::string_view raw) {
   return true;
 }
 
+// A line that drills a hole and does something else too ("G91 G98 G81 X10
+// Z-7 R-8 M8"): what is left without the words that make the hole ("G91
+// M8"), comments kept; empty when nothing is left. The hole itself is
+// written anew with the others.
+std::string without_hole_words(std::string_view raw) {
+  std::string kept, comments;
+  int depth = 0;
+  std::string code;
+  for (char ch : raw) {
+    if (ch == '(') ++depth;
+    if (depth > 0 || ch == ';') {
+      comments += ch;
+      if (ch == ')') --depth;
+      continue;
+    }
+    code += ch;
+  }
+  bool any = false;
+  for (std::size_t i = 0; i < code.size();) {
+    if (!std::isalpha(static_cast<unsigned char>(code[i]))) {
+      ++i;
+      continue;
+    }
+    std::size_t j = i + 1;
+    while (j < code.size() && (std::isdigit(static_cast<unsigned char>(code[j])) || code[j] == '.' || code[j] == '-' ||
+                               code[j] == '+' || code[j] == ' ' || code[j] == '\t')) {
+      if ((code[j] == ' ' || code[j] == '\t') && j + 1 < code.size() && std::isalpha(static_cast<unsigned char>(code[j + 1]))) break;
+      ++j;
+    }
+    const std::string word = code.substr(i, j - i);
+    const char letter = static_cast<char>(std::toupper(static_cast<unsigned char>(code[i])));
+    bool drop = std::string_view("XYZRQPFIJKLE").find(letter) != std::string_view::npos;
+    if (letter == 'G') {
+      const int k = static_cast<int>(std::lround(std::strtod(word.c_str() + 1, nullptr) * 10));
+      drop = k == 0 || k == 10 || k == 40 || (k >= 730 && k <= 890) || k == 980 || k == 990;
+    }
+    if (!drop) {
+      std::string w = word;
+      while (!w.empty() && (w.back() == ' ' || w.back() == '\t')) w.pop_back();
+      kept += (kept.empty() ? "" : " ") + w;
+      if (letter != 'N') any = true;
+    }
+    i = j;
+  }
+  if (!any) return comments.empty() ? std::string() : comments;
+  return comments.empty() ? kept : kept + " " + comments;
+}
+
 // An axis word without G0/G1 (or a cycle) on the line.
 bool moves_without_motion_word(std::string_view raw) {
   const std::string code = code_of(raw);
@@ -292,12 +347,27 @@ void write_keep_style(std::ostream& out, const DrillingProgram& p, const Drillin
   }
   std::ostringstream body;
   Writer w(body, s, p.text);
+  // The lines on which holes are drilled (a cycle line, a first feed down).
+  std::vector<char> drills(lines.size() + 2, 0);
+  for (const ToolRun& run : p.runs) {
+    for (const ProgramHole& h : run.holes) {
+      if (h.line < drills.size()) drills[h.line] = 1;
+    }
+  }
+  const bool any_incremental = std::any_of(p.incremental_from.begin(), p.incremental_from.end(),
+                                           [](const auto& change) { return change.second; });
   std::size_t next = 0;
   for (std::uint32_t no = 1; no <= lines.size(); ++no) {
     if (next < spans.size() && no == spans[next].first) {
       const Span& sp = spans[next++];
       for (std::uint32_t k = sp.first; k <= sp.last && k <= lines.size(); ++k) {
         if (hole_making_only(lines[k - 1])) continue;
+        if (drills[k]) {
+          // Its hole is written anew below; what else the line does stays.
+          const std::string rest = without_hole_words(lines[k - 1]);
+          if (!rest.empty()) body << rest << '\n';
+          continue;
+        }
         // The line's move ran in the input's modal rapid, set by a line now
         // rewritten: say it (G43 Z10. H1 -> G00 G43 Z10. H1).
         std::string kept(lines[k - 1]);
@@ -316,7 +386,12 @@ void write_keep_style(std::ostream& out, const DrillingProgram& p, const Drillin
       for (const ProgramHole& h : sp.run->holes) {
         if (h.last_line > last->last_line) last = &h;
       }
+      // The holes are written in absolute values: say so where the input
+      // ever went incremental, and give the input's own lines after the
+      // stretch back the mode they ran in.
+      if (any_incremental) w.prefix_next("G90 ");
       w.holes(*sp.run, std::nullopt, false, last->cycle.code == 0);
+      if (p.incremental_after(sp.last)) body << "G91\n";
       no = sp.last;
       continue;
     }
@@ -348,7 +423,9 @@ void write_keep_style(std::ostream& out, const DrillingProgram& p, const Drillin
       l = l.substr(j);
       i = 0;
     }
-    const bool code = i != std::string::npos && !l.empty() && l[0] != '(' && l[0] != '%' && l[0] != ';';
+    // The program number (O0025) stands first on its line: no N before it.
+    const bool code = i != std::string::npos && !l.empty() && l[0] != '(' && l[0] != '%' && l[0] != ';' && l[0] != 'O' &&
+                      l[0] != 'o';
     if (code) {
       out << 'N' << number << ' ' << l << '\n';
       number += step;

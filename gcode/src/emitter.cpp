@@ -177,16 +177,14 @@ std::string format_number(double value, int decimals) {
   return s;
 }
 
-namespace {
-
-// The first hole of a pass that is made at all, given --resume-from (a milled
-// slot resumed at its second end is milled whole again).
 std::size_t first_written(const ToolPass& p, std::size_t resume_from) {
   std::size_t first = 0;
   while (first < p.holes.size() && p.index[first] < resume_from) ++first;
   if (first > 0 && first < p.slot_to_next.size() && p.slot_to_next[first - 1]) --first;
   return first;
 }
+
+namespace {
 
 // The tool's canned cycle as the words a canned-cycle control would be given.
 HoleCycle cycle_of(const Tool& t, const ProgramSettings& s) {

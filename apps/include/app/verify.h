@@ -8,6 +8,7 @@
 #include "gcode/drilling.h"
 #include "gcode/interpreter.h"
 #include "planning/owned_tools.h"
+#include "planning/tools.h"
 
 namespace app {
 
@@ -28,5 +29,17 @@ constexpr double kMilledToleranceMm = 0.01;
 // better.nc --holes PROGRAM.nc`): every hole it drills is drilled as often,
 // at its place, with the same tool number and to the same depth.
 std::vector<std::string> check_same_holes(const gcode::Interpretation& run, const gcode::DrillingProgram& expected);
+
+// plan's check of its own program before the program is written (issue
+// 72): the text read back as verify reads it must drill exactly the holes
+// plan read (`expected`, where the program puts them), each once, with a
+// tool that makes it; or, for another CAM's program reordered, exactly the
+// input program's holes with their tools and depths. Returns the faults
+// (empty: the program may be written).
+// A tool table's tools make the holes in their [min, max] range, as plan chose them.
+planning::Tooling tooling_of_table(const planning::ToolTable& table);
+std::vector<std::string> self_check(const std::string& program_text, const aco::HoleSet& expected,
+                                    const planning::Tooling& tooling);
+std::vector<std::string> self_check(const std::string& program_text, const gcode::DrillingProgram& input);
 
 }  // namespace app

@@ -113,6 +113,10 @@ struct DrillingProgram {
   // Where the spindle went in XY after the last hole, when it moved on (a park position).
   std::optional<aco::Point2> end;
   bool uses_line_numbers = false;
+  // Every G90 (false) and G91 (true) by its line, in order: the distance
+  // mode a kept line runs in, which the keep-style writer restores.
+  std::vector<std::pair<std::uint32_t, bool>> incremental_from;
+  bool incremental_after(std::uint32_t line) const;  // G91 in force once `line` has run
   // Where reading stopped: the line of the program's end (M2, M30 or the
   // closing %), what ended it, and how many lines of code came after it
   // (not read). 0 / empty: the text ran out.

@@ -124,6 +124,10 @@ std::string z_home_block(Dialect d);
 // Locale-independent fixed-point text: always a decimal point, never "-0.000".
 std::string format_number(double value, int decimals);
 
+// The first hole of a pass that the program makes at all, given
+// --resume-from (a milled slot resumed at its second end is milled whole again).
+std::size_t first_written(const ToolPass& pass, std::size_t resume_from);
+
 // Writes the whole program. Throws std::invalid_argument for settings it cannot honour.
 void write_program(std::ostream& out, const std::vector<ToolPass>& passes, const ProgramSettings& settings);
 
