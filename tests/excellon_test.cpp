@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <map>
 #include <set>
 
 #include "app/errors.h"
@@ -73,7 +74,7 @@ app::InputOptions hits_only() {
 
 std::vector<std::string> fixtures() {
   std::vector<std::string> out;
-  for (const auto& e : std::filesystem::directory_iterator(data("real-excellon"))) {
+  for (const auto& e : std::filesystem::recursive_directory_iterator(data("real-excellon"))) {
     if (std::filesystem::exists(e.path().string() + ".hits.csv")) out.push_back(e.path().string());
   }
   std::sort(out.begin(), out.end());
@@ -324,4 +325,98 @@ TEST(excellon_test, the_holes_command_lists_the_hits_and_drills_slots_only_when_
     ASSERT_EQ(drilled.code, 0);
     EXPECT_GT(testutil::count_lines(drilled.out), testutil::count_lines(r.out)) << name << ": its slots as rows of holes";
   }
+}
+
+// Issue 70: drill files that do not state their format, read right or refused.
+TEST(excellon_test, units_and_zeros_on_one_line_are_both_read) {
+  // Upverter: "M71,TZ" (mm, trailing zeros kept), "M72,LZ" (inch, leading zeros kept).
+  auto m71 = parse("M48\nM71,TZ\nT1C0.8\n%\nT1\nX10000Y2500\nM30\n");
+  ASSERT_EQ(m71.holes.size(), 1u);
+  EXPECT_NEAR(m71.holes[0].center.x, 10.0, 1e-9);
+  EXPECT_NEAR(m71.holes[0].center.y, 2.5, 1e-9);
+  EXPECT_NEAR(m71.holes[0].diameter, 0.8, 1e-9) << "not 25.4 times too large";
+  auto m72 = parse("M48\nM72,LZ\nT1C0.02\n%\nT1\nX015Y0165\nM30\n");
+  EXPECT_NEAR(m72.holes[0].center.x, 1.5 * 25.4, 1e-9);
+  EXPECT_NEAR(m72.holes[0].center.y, 1.65 * 25.4, 1e-9);
+  EXPECT_TRUE(m72.assumptions.size() == 1u && m72.assumptions[0].find("format: 2:4") == 0) << "only the digits were assumed";
+}
+
+TEST(excellon_test, numbers_with_leading_zeros_and_varying_length_keep_their_leading_zeros) {
+  // PADS without a header: inch, 2:4, trailing zeros dropped.
+  auto pads = parse("%\nT1C.035F197S55\nX015Y012\nX021Y0165\nX0305Y01\nM30\n");
+  ASSERT_EQ(pads.holes.size(), 3u);
+  EXPECT_NEAR(pads.holes[0].center.x, 38.1, 1e-9);
+  EXPECT_NEAR(pads.holes[0].center.y, 30.48, 1e-9);
+  EXPECT_NEAR(pads.holes[1].center.y, 1.65 * 25.4, 1e-9);
+  EXPECT_THAT(pads.assumptions, ::testing::Contains(::testing::HasSubstr("leading zeros kept (the numbers' shapes say so)")));
+  EXPECT_THAT(pads.assumptions, ::testing::Contains(::testing::HasSubstr("units: inch")));
+  // Leading zeros dropped, trailing kept: the other way.
+  auto tz = parse("%\nT1C.035\nX15000Y12000\nX2100Y16500\nM30\n");
+  EXPECT_NEAR(tz.holes[1].center.x, 0.21 * 25.4, 1e-9);
+}
+
+TEST(excellon_test, allegro_tool_sizes_from_comments_and_the_format_from_nc_param) {
+  // Counted per tool against the file's own "Quantity = N" comments.
+  for (const std::string name : {"allegro/ncdrill-1-4.drl", "allegro-2/MinnowMax_RevA1_NCDRILL.drl"}) {
+    const std::string path = data("real-excellon/" + name);
+    app::LoadedHoles got = app::load_holes(path, hits_only());
+    EXPECT_TRUE(got.assumptions.empty()) << name << ": nc_param.txt says it all";
+    std::map<std::string, std::size_t> per_tool;
+    for (const auto& h : got.holes) ++per_tool[h.layer];
+    const std::string text = slurp(path);
+    std::size_t comments = 0;
+    for (std::size_t at = text.find(";T"); at != std::string::npos; at = text.find(";T", at + 1)) {
+      const std::string line = text.substr(at, text.find('\n', at) - at);
+      const int tool = std::stoi(line.substr(2));
+      const std::size_t quantity = std::stoul(line.substr(line.find("Quantity = ") + 11));
+      EXPECT_EQ(per_tool["T" + std::to_string(tool)], quantity) << name << " T" << tool;
+      ++comments;
+    }
+    EXPECT_GT(comments, 5u);
+  }
+  // Without its nc_param.txt the format is nowhere: refused, saying so.
+  testutil::TempDir t;
+  std::filesystem::copy_file(data("real-excellon/allegro/ncdrill-1-4.drl"), t / "ncdrill.drl");
+  try {
+    app::load_holes(t / "ncdrill.drl", hits_only());
+    ADD_FAILURE() << "read without its format";
+  } catch (const app::UserError& e) {
+    EXPECT_THAT(e.where_what(), ::testing::HasSubstr("without its nc_param.txt beside it"));
+  }
+  // The format stated outright reads it too.
+  app::InputOptions o = hits_only();
+  o.excellon_format = formats::InputOptions::ExcellonFormat{false, 2, 4, true};
+  EXPECT_EQ(app::load_holes(t / "ncdrill.drl", o).holes.size(), 287u);
+}
+
+TEST(excellon_test, holes_that_make_no_sense_as_read_are_refused_naming_the_option) {
+  // Inch assumed for a file written in mm: 38 m wide.
+  EXPECT_THAT(error_of("M48\nT1C0.8\n%\nT1\nX10.0Y20.0\nX1500.0Y2500.0\nM30\n"),
+              ::testing::AllOf(::testing::HasSubstr("t.drl: the 2 holes as read span"), ::testing::HasSubstr("units: inch"),
+                               ::testing::HasSubstr("--excellon-format")));
+  // One-digit numbers read with trailing zeros kept: all within a millimetre.
+  EXPECT_THAT(error_of("M48\nINCH\nT1C0.02\n%\nT1\nX1Y1\nX2Y1\nX3Y2\nM30\n"),
+              ::testing::HasSubstr("the 3 holes as read lie within"));
+  app::InputOptions lz;
+  lz.excellon_format = formats::InputOptions::ExcellonFormat{false, 2, 4, true};
+  auto read = parse("M48\nINCH\nT1C0.02\n%\nT1\nX1Y1\nX2Y1\nX3Y2\nM30\n", lz);
+  EXPECT_NEAR(read.holes[2].center.x, 30 * 25.4, 1e-9) << "--excellon-format wins";
+  // A file that states its format is taken at its word.
+  EXPECT_EQ(parse("M48\nINCH,TZ\n;FILE_FORMAT=2:4\nT1C0.02\n%\nT1\nX1Y1\nX2Y1\nM30\n").holes.size(), 2u);
+}
+
+TEST(excellon_test, header_lines_acodrill_does_not_know_are_named) {
+  auto r = parse("M48\nINCH,TZ\nFMAT,2\nFROBNICATE,7\nT1C0.02\n%\nT1\nX1000Y1000\nX20000Y1000\nM30\n");
+  ASSERT_EQ(r.warnings.size(), 1u);
+  EXPECT_EQ(r.warnings[0].line, 4u);
+  EXPECT_THAT(r.warnings[0].message, ::testing::HasSubstr("FROBNICATE,7"));
+  testutil::TempDir t;
+  spit(t / "a.drl", "M48\nINCH,TZ\nFROBNICATE,7\nT1C0.02\n%\nT1\nX1000Y1000\nX20000Y1000\nM30\n");
+  auto bad = testutil::acodrill_run("holes " + (t / "a.drl") + " --excellon-format inch,2:4");
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_THAT(bad.err, ::testing::HasSubstr("--excellon-format must be UNITS,I:D,ZEROS"));
+  auto ok = testutil::acodrill_run("plan " + (t / "a.drl") + " -o " + (t / "a.nc") + " --report " + (t / "r.json"));
+  EXPECT_EQ(ok.code, 0) << ok.err;
+  EXPECT_THAT(ok.err, ::testing::HasSubstr("warning: 3: header line \"FROBNICATE,7\""));
+  EXPECT_THAT(slurp(t / "r.json"), ::testing::HasSubstr("\"input_assumptions\""));
 }

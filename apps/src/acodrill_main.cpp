@@ -110,13 +110,48 @@ struct InputArgs {
   std::string slots = "drill";
   double slot_pitch = 0.0;
   std::string apertures;
+  std::string excellon_format;
 };
+
+// "--excellon-format inch,2:4,lz": units, integer:decimal digits, the zeros kept.
+formats::InputOptions::ExcellonFormat parse_excellon_format(const std::string& text) {
+  const std::string usage = "--excellon-format must be UNITS,I:D,ZEROS: mm or inch, integer and decimal digits, lz (leading "
+                            "zeros kept) or tz (trailing zeros kept), e.g. inch,2:4,lz (got \"" + text + "\")";
+  std::vector<std::string> parts;
+  std::size_t start = 0;
+  for (std::size_t comma = text.find(','); ; comma = text.find(',', start)) {
+    parts.push_back(text.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  formats::InputOptions::ExcellonFormat f;
+  int a = 0, b = 0;
+  char tail = 0;
+  if (parts.size() != 3 || std::sscanf(parts[1].c_str(), "%d:%d%c", &a, &b, &tail) != 2 || a < 1 || a > 7 || b < 0 || b > 7) {
+    throw app::UserError(usage);
+  }
+  if (parts[0] == "mm" || parts[0] == "metric") f.metric = true;
+  else if (parts[0] != "inch" && parts[0] != "in") throw app::UserError(usage);
+  if (parts[2] == "lz") f.leading_zeros_kept = true;
+  else if (parts[2] != "tz") throw app::UserError(usage);
+  f.int_digits = a;
+  f.dec_digits = b;
+  return f;
+}
 
 void add_input_options(CLI::App* cmd, InputArgs& a) {
   cmd->add_option("--layer", a.layers, "Only holes on these layers (repeatable; * and ? wildcards)");
   cmd->add_option("--min-diameter", a.min_d, "Only holes at least this wide (mm)")->check(CLI::Range(0.0, 1e9));
   cmd->add_option("--max-diameter", a.max_d, "Only holes at most this wide (mm)")->check(CLI::Range(0.0, 1e9));
-  cmd->add_option("--input-units", a.input_units, "mm | inch: units of inputs that do not say (default mm)");
+  cmd->add_option("--input-units", a.input_units,
+                  "mm | inch: units of inputs that do not say (default mm; an Excellon file that does not say is inch, "
+                  "its format's own default)");
+  cmd->add_option("--excellon-format", a.excellon_format,
+                  "UNITS,I:D,ZEROS: how an Excellon file's numbers are written, for a file that does not say or says it "
+                  "wrong; wins over the file (e.g. inch,2:4,lz: inch, 2 integer and 4 decimal digits, leading zeros kept; "
+                  "mm,3:3,tz: trailing zeros kept). Without it acodrill reads the file's header, its comments, Allegro's "
+                  "nc_param.txt beside it and the numbers' shapes, says what it assumed, and stops when the holes so read "
+                  "make no sense");
   cmd->add_option("--max-holes", a.max_holes, "Refuse inputs with more holes than this (default 5000000)")
       ->check(CLI::Range(std::size_t{1}, std::size_t{100'000'000}));
   cmd->add_option("--slots", a.slots,
@@ -156,6 +191,7 @@ app::InputOptions to_input_options(const InputArgs& a) {
     o.aperture_list = app::read_file(a.apertures);
     o.aperture_list_path = a.apertures;
   }
+  if (!a.excellon_format.empty()) o.excellon_format = parse_excellon_format(a.excellon_format);
   return o;
 }
 
@@ -264,6 +300,11 @@ void print_warnings(const app::LoadedHoles& loaded, const std::string& path, boo
     const app::Note& n = loaded.skipped.front();
     summary += std::string("; ") + skipped_label + ": " + std::to_string(loaded.skipped.size()) + " feature(s), first: " +
                (n.line ? "line " + std::to_string(n.line) + ": " : "") + n.message;
+  }
+  if (!loaded.assumptions.empty()) {
+    std::string assumed;
+    for (const std::string& a : loaded.assumptions) assumed += (assumed.empty() ? "" : ", ") + a;
+    summary += "; assumed " + assumed;
   }
   std::size_t warnings = 0;
   std::string first;

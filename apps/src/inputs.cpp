@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <numeric>
 #include <tuple>
 
@@ -11,6 +12,15 @@
 namespace app {
 
 LoadedHoles load_holes(const std::string& path, const InputOptions& options) {
+  // Allegro writes its drill files' number format only in nc_param.txt beside them.
+  const std::filesystem::path nc_param = std::filesystem::path(path).parent_path() / "nc_param.txt";
+  std::error_code ec;
+  if (path != "-" && options.nc_param.empty() && std::filesystem::is_regular_file(nc_param, ec)) {
+    InputOptions with = options;
+    with.nc_param = read_file(nc_param.string());
+    with.nc_param_path = nc_param.string();
+    return formats::parse_holes(path, read_file(path), with);
+  }
   return formats::parse_holes(path, read_file(path), options);
 }
 
@@ -62,6 +72,7 @@ Job load_job(const std::vector<std::string>& paths, const InputOptions& options)
     chain_base = top;
     for (const Note& n : part.skipped) all.skipped.push_back({n.line, shown + ": " + n.message});
     for (const Note& n : part.warnings) all.warnings.push_back({n.line, shown + ": " + n.message});
+    for (const std::string& a : part.assumptions) all.assumptions.push_back(shown + ": " + a);
     all.duplicates_removed += part.duplicates_removed;
     all.skipped_by_filter += part.skipped_by_filter;
     all.slots_drilled += part.slots_drilled;

@@ -115,6 +115,8 @@ std::string report_json(const aco::HoleSet& holes, const PlanResult& plan, const
   for (const auto& [file, count] : ctx.sources) sources.push_back({{"file", file}, {"holes", count}});
   if (ctx.sources.empty()) sources.push_back({{"file", ctx.source}, {"holes", holes.size()}});
   j["sources"] = sources;
+  // What a reader assumed because the input did not say (Excellon units and number format).
+  if (ctx.input && !ctx.input->assumptions.empty()) j["input_assumptions"] = ctx.input->assumptions;
   j["source"] = ctx.source;
   j["program"] = ctx.program;
   return j.dump(2) + "\n";

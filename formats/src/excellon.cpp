@@ -30,6 +30,8 @@ bool starts_with(std::string_view s, std::string_view p) { return s.substr(0, p.
 
 struct Format {
   bool metric = false;
+  // What the file (or its nc_param.txt, or --excellon-format) stated; the rest is assumed.
+  bool units_stated = false, zeros_stated = false, digits_stated = false;
   enum class Zeros { Unknown, Leading, Trailing } zeros = Zeros::Unknown;  // which zeros are KEPT
   int int_digits = 0, dec_digits = 0;  // 0: the default for the units
   int ints() const { return int_digits ? int_digits : (metric ? 3 : 2); }
@@ -47,6 +49,11 @@ class Reader {
   void header_line(std::string_view s);
   void body_line(std::string_view s);
   void define_tool(std::string_view s);
+  bool units_and_zeros(std::string_view s);
+  void allegro_tool_comment(std::string_view s);
+  void apply_nc_param(std::string_view text);
+  void detect_zeros(std::string_view data);
+  void check_plausible();
   double coordinate(std::string_view digits) const;
   double unit_mm() const { return fmt_.metric ? 1.0 : kInch; }
   void hit(double x, double y);
@@ -76,6 +83,11 @@ class Reader {
   bool route_mode_ = false;  // G00/G01/G02/G03: routing, not drilling
   bool ended_ = false;
   std::map<int, double> tools_;  // number → diameter in file units
+  // Allegro without a header: ";T01 Holesize 1. = 8.000000 ... MILS": number → diameter in mm.
+  std::map<int, double> comment_tools_mm_;
+  // The zeros the numbers' shapes say are kept, where the file does not state it.
+  Format::Zeros detected_zeros_ = Format::Zeros::Unknown;
+  bool implicit_numbers_ = false;  // a coordinate without a decimal point was read
   int tool_ = -1;                // -1: none selected yet; 0: unloaded (T0)
   double x_ = 0, y_ = 0;         // file units, before the G93 offset
   double off_x_ = 0, off_y_ = 0;
@@ -159,7 +171,9 @@ void Reader::define_tool(std::string_view s) {
     tools_[number] = *diameter;
   }
   if (!in_header_) {
-    if (!diameter && number != 0 && !tools_.count(number)) fail("tool T" + std::to_string(number) + " is not defined");
+    if (!diameter && number != 0 && !tools_.count(number) && !comment_tools_mm_.count(number)) {
+      fail("tool T" + std::to_string(number) + " is not defined");
+    }
     tool_ = number;
   }
 }
@@ -169,41 +183,142 @@ void Reader::header_line(std::string_view s) {
     in_header_ = false;
     return;
   }
-  if (starts_with(s, "INCH") || starts_with(s, "METRIC")) {
-    fmt_.metric = starts_with(s, "METRIC");
-    std::size_t comma = s.find(',');
-    while (comma != std::string_view::npos) {
-      std::size_t next = s.find(',', comma + 1);
-      std::string_view part = trim(s.substr(comma + 1, next == std::string_view::npos ? next : next - comma - 1));
-      if (part == "LZ") fmt_.zeros = Format::Zeros::Leading;
-      else if (part == "TZ") fmt_.zeros = Format::Zeros::Trailing;
-      else if (!part.empty() && part.find('.') != std::string_view::npos) {  // "000.000"
-        fmt_.int_digits = static_cast<int>(part.find('.'));
-        fmt_.dec_digits = static_cast<int>(part.size() - part.find('.') - 1);
-      }
-      comma = next;
-    }
-    return;
-  }
+  if (units_and_zeros(s)) return;
   if (s[0] == 'T' && s.size() > 1 && std::isdigit(static_cast<unsigned char>(s[1]))) {
     define_tool(s);
     return;
   }
-  if (s == "M71") {
-    fmt_.metric = true;
-    return;
-  }
-  if (s == "M72") {
-    fmt_.metric = false;
-    return;
-  }
-  // FMAT, ICI, VER, DETECT, ATC, OM48, G90/G91 ...: settings that do not move a hit.
   if (s == "G91" || s == "ICI,ON") absolute_ = false;
   if (s == "G90" || s == "ICI,OFF") absolute_ = true;
+  // Settings that do not move a hit: format version, incremental input,
+  // tool detection, changer, header echo, and the like.
+  static const char* const known[] = {"FMAT", "ICI", "VER", "DETECT", "ATC", "OM48", "G90", "G91", "G93", "M47", "AFS",
+                                      "BLKD", "CCW", "CP", "DN", "DTMDIST", "FSB", "HBCK", "HPCK", "NCSL", "OSTOP", "PCKPARAM",
+                                      "PF", "PVS", "R,", "SBK", "SG", "SIXM", "TCST", "UP", "VERSION", "Z+", "Z-", "ZA", "ZC", "ZS"};
+  if (std::none_of(std::begin(known), std::end(known), [&](const char* k) { return starts_with(s, k); })) {
+    out_.warnings.push_back({line_, "header line \"" + std::string(s.substr(0, 40)) + "\" is not one acodrill knows; read past"});
+  }
+}
+
+// "INCH,LZ", "METRIC,TZ,000.000", "M71", "M72,TZ" (Upverter): units, the
+// zeros kept and the format, on one line. False when the line is none of these.
+bool Reader::units_and_zeros(std::string_view s) {
+  const bool inch = starts_with(s, "INCH") || starts_with(s, "M72");
+  const bool metric = starts_with(s, "METRIC") || starts_with(s, "M71");
+  if (!inch && !metric) return false;
+  const std::size_t word = starts_with(s, "M7") ? 3 : inch ? 4 : 6;
+  if (s.size() > word && s[word] != ',' && s[word] != ' ') return false;  // "M715", "INCHES"?
+  if (!options_.excellon_format) {
+    fmt_.metric = metric;
+    fmt_.units_stated = true;
+  }
+  std::size_t comma = s.find(',');
+  while (comma != std::string_view::npos) {
+    std::size_t next = s.find(',', comma + 1);
+    std::string_view part = trim(s.substr(comma + 1, next == std::string_view::npos ? next : next - comma - 1));
+    if (options_.excellon_format) {
+      // --excellon-format wins over what the file says.
+    } else if (part == "LZ") {
+      fmt_.zeros = Format::Zeros::Leading;
+      fmt_.zeros_stated = true;
+    } else if (part == "TZ") {
+      fmt_.zeros = Format::Zeros::Trailing;
+      fmt_.zeros_stated = true;
+    } else if (!part.empty() && part.find('.') != std::string_view::npos) {  // "000.000"
+      fmt_.int_digits = static_cast<int>(part.find('.'));
+      fmt_.dec_digits = static_cast<int>(part.size() - part.find('.') - 1);
+      fmt_.digits_stated = true;
+    }
+    comma = next;
+  }
+  return true;
+}
+
+// Allegro's tool list as comments, where it writes no M48 header:
+// ";T01 Holesize 1. = 8.000000 Tolerance = +2.000000/-2.000000 PLATED MILS Quantity = 1873".
+void Reader::allegro_tool_comment(std::string_view s) {
+  if (s.size() < 4 || s[1] != 'T' || s.find("Holesize") == std::string_view::npos) return;
+  int number = 0;
+  auto r = std::from_chars(s.data() + 2, s.data() + s.size(), number);
+  const std::size_t eq = s.find('=');
+  if (r.ec != std::errc() || eq == std::string_view::npos) return;
+  std::string_view rest = trim(s.substr(eq + 1));
+  double size = 0;
+  auto r2 = std::from_chars(rest.data(), rest.data() + rest.size(), size);
+  if (r2.ec != std::errc() || !(size > 0)) return;
+  double mm = 0;
+  if (s.find(" MILS") != std::string_view::npos) mm = size * kInch / 1000.0;
+  else if (s.find(" MM") != std::string_view::npos) mm = size;
+  else if (s.find(" INCH") != std::string_view::npos) mm = size * kInch;
+  else fail("Allegro tool T" + std::to_string(number) + " gives no unit (MILS, MM or INCH) for its size");
+  comment_tools_mm_[number] = mm;
+}
+
+// Allegro's nc_param.txt: the number format its drill files do not state.
+void Reader::apply_nc_param(std::string_view text) {
+  std::size_t pos = 0;
+  while (pos < text.size()) {
+    std::size_t nl = text.find('\n', pos);
+    if (nl == std::string_view::npos) nl = text.size();
+    std::string_view l = trim(text.substr(pos, nl - pos));
+    pos = nl + 1;
+    const std::size_t space = l.find_first_of(" \t");
+    if (space == std::string_view::npos) continue;
+    const std::string_view key = l.substr(0, space), value = trim(l.substr(space));
+    int n = 0;
+    if (key == "INTEGER-PLACES" && std::from_chars(value.data(), value.data() + value.size(), n).ec == std::errc() && n > 0 && n < 8) {
+      fmt_.int_digits = n;
+      fmt_.digits_stated = true;
+    } else if (key == "DECIMAL-PLACES" && std::from_chars(value.data(), value.data() + value.size(), n).ec == std::errc() && n >= 0 && n < 8) {
+      fmt_.dec_digits = n;
+    } else if (key == "OUTPUT-UNITS") {
+      fmt_.metric = value == "METRIC";
+      fmt_.units_stated = true;
+    } else if (key == "SUPPRESS-LEAD-ZEROES") {
+      if (value == "YES") fmt_.zeros = Format::Zeros::Trailing;
+      fmt_.zeros_stated = true;
+    } else if (key == "SUPPRESS-TRAIL-ZEROES") {
+      if (value == "YES") fmt_.zeros = Format::Zeros::Leading;
+      fmt_.zeros_stated = true;
+    }
+  }
+  // Neither suppressed: every number has all its digits, read from the left.
+  if (fmt_.zeros == Format::Zeros::Unknown && fmt_.zeros_stated) fmt_.zeros = Format::Zeros::Leading;
+}
+
+// Numbers keep the zeros the writer did not suppress: "X015Y0165" (leading
+// zeros kept, lengths varying) can only be LZ; "X5850" with no number
+// starting with 0 only TZ. Both kinds seen: fixed width, either reading.
+void Reader::detect_zeros(std::string_view data) {
+  std::size_t leading = 0, trailing = 0;
+  std::size_t pos = 0;
+  while (pos < data.size()) {
+    std::size_t nl = data.find('\n', pos);
+    if (nl == std::string_view::npos) nl = data.size();
+    std::string_view l = trim(data.substr(pos, nl - pos));
+    pos = nl + 1;
+    if (l.empty() || l[0] == ';' || l[0] == 'T' || l[0] == 'M' || l[0] == 'F') continue;
+    for (std::size_t i = 0; i < l.size(); ++i) {
+      if (l[i] != 'X' && l[i] != 'Y') continue;
+      std::size_t j = i + 1;
+      if (j < l.size() && (l[j] == '-' || l[j] == '+')) ++j;
+      const std::size_t start = j;
+      while (j < l.size() && std::isdigit(static_cast<unsigned char>(l[j]))) ++j;
+      if (j < l.size() && l[j] == '.') break;  // explicit decimals: no zeros to tell
+      const std::string_view digits = l.substr(start, j - start);
+      if (digits.size() >= 2 && digits.find_first_not_of('0') != std::string_view::npos) {
+        if (digits.front() == '0') ++leading;
+        if (digits.back() == '0') ++trailing;
+      }
+    }
+  }
+  if (leading > 0 && trailing == 0) detected_zeros_ = Format::Zeros::Leading;
+  if (trailing > 0 && leading == 0) detected_zeros_ = Format::Zeros::Trailing;
 }
 
 double Reader::coordinate(std::string_view text) const {
   if (text.find('.') != std::string_view::npos) return plain_number(text);
+  const_cast<Reader*>(this)->implicit_numbers_ = true;
   bool negative = false;
   if (!text.empty() && (text[0] == '-' || text[0] == '+')) {
     negative = text[0] == '-';
@@ -216,7 +331,8 @@ double Reader::coordinate(std::string_view text) const {
     digits = digits * 10 + (c - '0');
   }
   double v;
-  if (fmt_.zeros == Format::Zeros::Leading) {
+  const Format::Zeros zeros = fmt_.zeros != Format::Zeros::Unknown ? fmt_.zeros : detected_zeros_;
+  if (zeros == Format::Zeros::Leading) {
     // Leading zeros kept, trailing dropped: the first int_digits digits are the integer part.
     const int total = fmt_.ints() + fmt_.decs();
     v = static_cast<double>(digits) * std::pow(10.0, total - static_cast<int>(text.size())) / std::pow(10.0, fmt_.decs());
@@ -231,12 +347,13 @@ void Reader::hit(double x, double y) {
   auto t = tools_.find(tool_);
   // T0 unloads the spindle, unless the header defined a tool 0 (some EDA
   // tools number from 0; gerbv and they read those hits).
-  if (tool_ == 0 && t == tools_.end()) fail("drill hit with no tool loaded (T0)");
-  if (t == tools_.end()) fail("tool T" + std::to_string(tool_) + " is not defined");
+  auto c = comment_tools_mm_.find(tool_);
+  if (tool_ == 0 && t == tools_.end() && c == comment_tools_mm_.end()) fail("drill hit with no tool loaded (T0)");
+  if (t == tools_.end() && c == comment_tools_mm_.end()) fail("tool T" + std::to_string(tool_) + " is not defined");
   aco::Hole h;
   const double u = unit_mm();
   h.center = {(x + off_x_) * u, (y + off_y_) * u};
-  h.diameter = t->second * u;
+  h.diameter = t != tools_.end() ? t->second * u : c->second;
   h.layer = "T" + std::to_string(tool_);
   h.source_line = line_;
   out_.holes.push_back(std::move(h));
@@ -280,10 +397,7 @@ void Reader::body_line(std::string_view s) {
     define_tool(s);
     return;
   }
-  if (starts_with(s, "INCH") || starts_with(s, "METRIC") || s == "M71" || s == "M72") {
-    header_line(s);
-    return;
-  }
+  if (units_and_zeros(s)) return;
   if (starts_with(s, "M15") || starts_with(s, "M14")) {
     route_mode_ = true;  // plunge of a routing tool: a path starts here
     end_path();
@@ -472,6 +586,18 @@ LoadedHoles Reader::run(std::string_view data) {
   } else {
     fmt_.metric = options_.default_unit_mm == 1.0;
   }
+  // nc_param.txt beside the file speaks only for Allegro's own drill files.
+  const bool allegro = data.find("Holesize") != std::string_view::npos || data.find(";LEADER:") != std::string_view::npos;
+  if (!options_.nc_param.empty() && allegro) apply_nc_param(options_.nc_param);
+  if (options_.excellon_format) {
+    const InputOptions::ExcellonFormat& f = *options_.excellon_format;
+    fmt_.metric = f.metric;
+    fmt_.int_digits = f.int_digits;
+    fmt_.dec_digits = f.dec_digits;
+    fmt_.zeros = f.leading_zeros_kept ? Format::Zeros::Leading : Format::Zeros::Trailing;
+    fmt_.units_stated = fmt_.zeros_stated = fmt_.digits_stated = true;
+  }
+  detect_zeros(data);
   std::size_t pos = 0;
   while (pos < data.size() && !ended_) {
     std::size_t nl = data.find('\n', pos);
@@ -484,6 +610,8 @@ LoadedHoles Reader::run(std::string_view data) {
     std::string_view s = trim(raw);
     if (s.empty()) continue;
     if (s[0] == ';') {
+      allegro_tool_comment(s);
+      if (options_.excellon_format) continue;
       std::size_t f = s.find("FILE_FORMAT=");
       std::size_t g = s.find("FORMAT={");
       if (f != std::string_view::npos || g != std::string_view::npos) {
@@ -492,14 +620,17 @@ LoadedHoles Reader::run(std::string_view data) {
         if (std::sscanf(std::string(spec).c_str(), "%d:%d", &a, &b) == 2 && a > 0 && b > 0 && a < 8 && b < 8) {
           fmt_.int_digits = a;
           fmt_.dec_digits = b;
+          fmt_.digits_stated = true;
         }
         if (g != std::string_view::npos) {
-          if (spec.find("inch") != std::string_view::npos) fmt_.metric = false;
+          if (spec.find("inch") != std::string_view::npos) fmt_.metric = false, fmt_.units_stated = true;
           if (spec.find("metric") != std::string_view::npos || spec.find("mm") != std::string_view::npos) {
             fmt_.metric = true;
+            fmt_.units_stated = true;
           }
-          if (spec.find("suppress trailing") != std::string_view::npos) fmt_.zeros = Format::Zeros::Leading;
-          if (spec.find("suppress leading") != std::string_view::npos) fmt_.zeros = Format::Zeros::Trailing;
+          if (spec.find("suppress trailing") != std::string_view::npos) fmt_.zeros = Format::Zeros::Leading, fmt_.zeros_stated = true;
+          if (spec.find("suppress leading") != std::string_view::npos) fmt_.zeros = Format::Zeros::Trailing, fmt_.zeros_stated = true;
+          if (spec.find("keep zeros") != std::string_view::npos) fmt_.zeros_stated = true;
         }
       }
       continue;
@@ -512,7 +643,76 @@ LoadedHoles Reader::run(std::string_view data) {
   }
   end_path();
   out_.metric = fmt_.metric;
+  // An Allegro file without its nc_param.txt: the number format is only there.
+  if (!comment_tools_mm_.empty() && implicit_numbers_ && !fmt_.digits_stated && !fmt_.zeros_stated) {
+    throw InputError(path_, 0, "an Allegro drill file without its nc_param.txt beside it: the number format is written only "
+                               "there; put nc_param.txt beside the file, or give --excellon-format (e.g. inch,2:4,lz)");
+  }
+  // Say what was assumed, and check that the holes so read make sense.
+  if (!fmt_.units_stated) {
+    out_.assumptions.push_back(std::string("units: ") + (fmt_.metric ? "mm (from --input-units)" : "inch (the file does not say; Excellon's default)"));
+  }
+  if (implicit_numbers_) {
+    if (!fmt_.zeros_stated) {
+      const Format::Zeros z = detected_zeros_;
+      out_.assumptions.push_back(z == Format::Zeros::Leading    ? "zeros: leading zeros kept (the numbers' shapes say so)"
+                                 : z == Format::Zeros::Trailing ? "zeros: trailing zeros kept (the numbers' shapes say so)"
+                                                                : "zeros: trailing zeros kept (the file does not say)");
+    }
+    if (!fmt_.digits_stated) {
+      out_.assumptions.push_back("format: " + std::to_string(fmt_.ints()) + ":" + std::to_string(fmt_.decs()) +
+                                 " (the file does not say; the default for its units)");
+    }
+  }
+  if (!out_.assumptions.empty()) check_plausible();
   return std::move(out_);
+}
+
+// Read with assumed units or zeros, a board whose holes lie within a
+// millimetre, inside one another, or over two metres apart was read wrong.
+void Reader::check_plausible() {
+  if (out_.holes.size() < 2) return;
+  double x0 = out_.holes[0].center.x, x1 = x0, y0 = out_.holes[0].center.y, y1 = y0;
+  for (const aco::Hole& h : out_.holes) {
+    x0 = std::min(x0, h.center.x), x1 = std::max(x1, h.center.x);
+    y0 = std::min(y0, h.center.y), y1 = std::max(y1, h.center.y);
+  }
+  const double extent = std::max(x1 - x0, y1 - y0);
+  // Holes whose centre lies inside another hole, on a grid of the largest diameter.
+  std::size_t inside = 0;
+  double largest = 0;
+  for (const aco::Hole& h : out_.holes) largest = std::max(largest, h.diameter);
+  if (largest > 0) {
+    std::map<std::pair<long long, long long>, std::vector<std::size_t>> grid;
+    auto key = [&](aco::Point2 p) { return std::make_pair(std::llround(std::floor(p.x / largest)), std::llround(std::floor(p.y / largest))); };
+    for (std::size_t i = 0; i < out_.holes.size(); ++i) grid[key(out_.holes[i].center)].push_back(i);
+    for (std::size_t i = 0; i < out_.holes.size() && inside * 2 <= out_.holes.size(); ++i) {
+      const aco::Hole& h = out_.holes[i];
+      const auto [cx, cy] = key(h.center);
+      bool found = false;
+      for (long long dx = -1; dx <= 1 && !found; ++dx) {
+        for (long long dy = -1; dy <= 1 && !found; ++dy) {
+          auto it = grid.find({cx + dx, cy + dy});
+          if (it == grid.end()) continue;
+          for (std::size_t j : it->second) {
+            const double d = aco::euclidean(h.center, out_.holes[j].center);
+            if (j != i && d > 1e-9 && d < std::max(h.diameter, out_.holes[j].diameter) / 2) found = true;
+          }
+        }
+      }
+      if (found) ++inside;
+    }
+  }
+  std::string why;
+  if (extent < 1.0) why = "lie within " + std::to_string(extent).substr(0, 5) + " mm";
+  else if (extent > 2000.0) why = "span " + std::to_string(static_cast<long long>(extent)) + " mm";
+  else if (inside * 2 > out_.holes.size()) why = "lie inside one another (" + std::to_string(inside) + " of them)";
+  if (why.empty()) return;
+  std::string assumed;
+  for (const std::string& a : out_.assumptions) assumed += (assumed.empty() ? "" : "; ") + a;
+  throw InputError(path_, 0, "the " + std::to_string(out_.holes.size()) + " holes as read " + why +
+                                 ": the units or the zeros are likely wrong (" + assumed +
+                                 "); give --excellon-format UNITS,I:D,ZEROS (e.g. inch,2:4,lz)");
 }
 
 }  // namespace

@@ -64,6 +64,16 @@ struct InputOptions {
   SlotOptions slots;
   // RS-274D's aperture list (--apertures): its text and name; empty: none.
   std::string aperture_list, aperture_list_path;
+  // Excellon: the number format stated outright (--excellon-format), which
+  // wins over anything the file says or its numbers suggest; and Allegro's
+  // nc_param.txt found beside a drill file (its text and path; empty: none).
+  struct ExcellonFormat {
+    bool metric = false;
+    int int_digits = 0, dec_digits = 0;
+    bool leading_zeros_kept = false;
+  };
+  std::optional<ExcellonFormat> excellon_format;
+  std::string nc_param, nc_param_path;
 };
 
 struct Note {
@@ -75,6 +85,9 @@ struct LoadedHoles {
   aco::HoleSet holes;
   InputFormat format = InputFormat::Csv;
   std::vector<Note> warnings;
+  // What a reader had to assume because the file did not say (Excellon
+  // units and number format): shown in the summary and the report.
+  std::vector<std::string> assumptions;
   std::size_t duplicates_removed = 0;
   // A drilling program: holes it drills again at the same place (kept in `holes`).
   std::size_t drilled_again = 0;
