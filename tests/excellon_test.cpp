@@ -8,6 +8,8 @@
 #include <filesystem>
 #include <map>
 #include <set>
+#include <sstream>
+#include <cstdio>
 
 #include "app/errors.h"
 #include "formats/readers.h"
@@ -419,4 +421,109 @@ TEST(excellon_test, header_lines_acodrill_does_not_know_are_named) {
   EXPECT_EQ(ok.code, 0) << ok.err;
   EXPECT_THAT(ok.err, ::testing::HasSubstr("warning: 3: header line \"FROBNICATE,7\""));
   EXPECT_THAT(slurp(t / "r.json"), ::testing::HasSubstr("\"input_assumptions\""));
+}
+
+// Issue 70: jaseg/gerbonara's corpus, drill files from sixteen EDA tools
+// (tests/data/gerbonara-drill/README.md): each read as an independent reader
+// reads it — gerbv where it reads the file right, else make_hits.py's
+// listing from the format the file states — or refused with one line.
+namespace {
+
+struct CorpusFile {
+  std::string path;
+  enum Oracle { Gerbv, Listing, RoutesOnly, Refused } oracle;
+  std::string refusal;  // Refused: what the one line says
+};
+
+std::vector<Hit> gerbv_hits(const std::string& path) {
+  testutil::TempDir t;
+  auto r = testutil::run("gerbv -x drill -o " + (t / "out.drl") + " " + shell_quote(path));
+  EXPECT_EQ(r.code, 0) << r.err;
+  // gerbv writes INCH,TZ with four decimals: digits / 10^4 inch.
+  std::map<int, double> tools;
+  int tool = -1;
+  std::vector<Hit> hits;
+  std::istringstream in(slurp(t / "out.drl"));
+  for (std::string l; std::getline(in, l);) {
+    int n = 0;
+    double d = 0;
+    long long x = 0, y = 0;
+    char c = 0;
+    if (std::sscanf(l.c_str(), "T%dC%lf", &n, &d) == 2) tools[n] = d * 25.4;
+    else if (std::sscanf(l.c_str(), "T%d%c", &n, &c) == 1) tool = n;
+    else if (std::sscanf(l.c_str(), "X%lldY%lld%c", &x, &y, &c) == 2) hits.push_back({x * 25.4e-4, y * 25.4e-4, tools[tool]});
+  }
+  return hits;
+}
+
+}  // namespace
+
+TEST(excellon_test, every_drill_file_of_sixteen_eda_tools_is_read_right_or_refused) {
+  const std::vector<CorpusFile> corpus = {
+      {"Target3001/IRNASIoTbank1.2.Drill", CorpusFile::Gerbv, ""},
+      {"altium-composite-drill/NC Drill/LimeSDR-QPCIe_1v2-RoundHoles.TXT", CorpusFile::Listing, ""},
+      {"altium-composite-drill/NC Drill/LimeSDR-QPCIe_1v2-SlotHoles.TXT", CorpusFile::RoutesOnly, ""},
+      {"altium-old-composite-drill.txt", CorpusFile::Gerbv, ""},
+      {"diptrace/keyboard.drl", CorpusFile::Gerbv, ""},
+      {"diptrace/mainboard.drl", CorpusFile::Gerbv, ""},
+      {"diptrace/panel.drl", CorpusFile::Gerbv, ""},
+      {"eagle-newer/drills.xln", CorpusFile::Gerbv, ""},
+      {"easyeda/Gerber_Drill_NPTH.DRL", CorpusFile::Listing, ""},
+      {"easyeda/Gerber_Drill_PTH.DRL", CorpusFile::Listing, ""},
+      {"fritzing/combined.txt", CorpusFile::Gerbv, ""},
+      {"geda/controller.plated-drill.cnc", CorpusFile::Gerbv, ""},
+      {"geda/controller.unplated-drill.cnc", CorpusFile::Gerbv, ""},
+      {"geda/driver.plated-drill.cnc", CorpusFile::Gerbv, ""},
+      {"geda/driver.unplated-drill.cnc", CorpusFile::Gerbv, ""},
+      {"kicad-older/chibi_2024.drl", CorpusFile::Gerbv, ""},
+      {"kicad-x2-tests/x2ap/Flashpads-PTH.drl", CorpusFile::Gerbv, ""},
+      {"kicad-x2-tests/x2ap/Flashpads-NPTH.drl", CorpusFile::Gerbv, ""},
+      {"kicad-x2-tests/nox2noap/Flashpads-PTH.drl", CorpusFile::Gerbv, ""},
+      {"ncdrill.DRD", CorpusFile::Gerbv, ""},
+      {"orcad/arena_12-12_v6_L1-L6.drl", CorpusFile::Listing, ""},
+      {"p-cad/ZXINET.DRL", CorpusFile::Gerbv, ""},
+      {"pcb-rnd/power-art.xln", CorpusFile::Gerbv, ""},
+      {"siemens-2/NCDrill/ContourPlated.ncd", CorpusFile::RoutesOnly, ""},
+      {"siemens-2/NCDrill/ThruHoleNonPlated.ncd", CorpusFile::Gerbv, ""},
+      {"siemens-2/NCDrill/ThruHolePlated.ncd", CorpusFile::Gerbv, ""},
+      {"siemens/80101_0125_F200_ContourPlated.ncd", CorpusFile::RoutesOnly, ""},
+      {"siemens/80101_0125_F200_ThruHoleNonPlated.ncd", CorpusFile::Gerbv, ""},
+      {"siemens/80101_0125_F200_ThruHolePlated.ncd", CorpusFile::Gerbv, ""},
+      {"upverter/design_export.drl", CorpusFile::Gerbv, ""},
+      {"upverter/design_export.xln", CorpusFile::Gerbv, ""},  // Gerber drill data, chosen by content
+      {"zuken-emulated/Drill/8seg_Driver__routed_Drill_thru_nplt.fdr", CorpusFile::Refused,
+       "holes as read lie within 0.899 mm: the units or the zeros are likely wrong"},
+      {"test_syntax_error.exc", CorpusFile::Refused, "test_syntax_error.exc:12: tool T99 is not defined"},
+  };
+  std::size_t files = 0;
+  for (const CorpusFile& c : corpus) {
+    SCOPED_TRACE(c.path);
+    const std::string path = data("gerbonara-drill/" + c.path);
+    if (c.oracle == CorpusFile::Refused) {
+      auto r = testutil::acodrill_run("holes " + shell_quote(path));
+      EXPECT_EQ(r.code, 2);
+      EXPECT_EQ(testutil::count_lines(r.err), 1) << r.err;
+      EXPECT_THAT(r.err, ::testing::HasSubstr(c.refusal));
+      ++files;
+      continue;
+    }
+    app::LoadedHoles got = app::load_holes(path, hits_only());
+    std::vector<Hit> mine;
+    for (const auto& h : got.holes) mine.push_back({h.center.x, h.center.y, h.diameter});
+    if (c.oracle == CorpusFile::RoutesOnly) {
+      EXPECT_TRUE(mine.empty());
+      EXPECT_FALSE(got.skipped.empty()) << "its slots and routes are named";
+    } else if (c.oracle == CorpusFile::Listing) {
+      EXPECT_EQ(diff(mine, hits_csv(slurp(path + ".hits.csv")), 1e-6, 1e-6), "");
+    } else {
+      // gerbv prints positions to a tenth of a thou (2.54 µm), tool sizes to a thou (25.4 µm).
+      const std::vector<Hit> want = gerbv_hits(path);
+      EXPECT_EQ(diff(mine, want, 0.0026, 0.0128), "");
+      std::set<std::pair<long long, long long>> distinct;
+      for (const Hit& w : want) distinct.insert({std::llround(w.x * 1e3), std::llround(w.y * 1e3)});
+      EXPECT_EQ(mine.size(), distinct.size());
+    }
+    ++files;
+  }
+  EXPECT_EQ(files, 33u);
 }

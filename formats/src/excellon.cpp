@@ -643,8 +643,8 @@ LoadedHoles Reader::run(std::string_view data) {
   }
   end_path();
   out_.metric = fmt_.metric;
-  // An Allegro file without its nc_param.txt: the number format is only there.
-  if (!comment_tools_mm_.empty() && implicit_numbers_ && !fmt_.digits_stated && !fmt_.zeros_stated) {
+  // An Allegro file without its nc_param.txt (nor a header giving units): the number format is only there.
+  if (!comment_tools_mm_.empty() && implicit_numbers_ && !fmt_.units_stated && !fmt_.digits_stated && !fmt_.zeros_stated) {
     throw InputError(path_, 0, "an Allegro drill file without its nc_param.txt beside it: the number format is written only "
                                "there; put nc_param.txt beside the file, or give --excellon-format (e.g. inch,2:4,lz)");
   }

@@ -14,6 +14,11 @@ FILES = {
     'allegro/ncdrill-1-4.drl': (True, 2, 4, True),              # nc_param: ENGLISH 2.4, no suppression
     'allegro-2/MinnowMax_RevA1_NCDRILL.drl': (True, 3, 5, True),  # nc_param: ENGLISH 3.5, no suppression
     'unknown_m71_g93_tzsupp.exc': (False, 3, 3, True),          # M71; trailing zeros suppressed (the file's name)
+    # jaseg/gerbonara's corpus where gerbv misreads (tests/data/gerbonara-drill/README.md):
+    '../gerbonara-drill/altium-composite-drill/NC Drill/LimeSDR-QPCIe_1v2-RoundHoles.TXT': (False, 4, 4, True),  # FILE_FORMAT=4:4, METRIC,LZ
+    '../gerbonara-drill/easyeda/Gerber_Drill_PTH.DRL': (True, 2, 4, True),   # INCH,LZ, FILE_FORMAT=2:4
+    '../gerbonara-drill/easyeda/Gerber_Drill_NPTH.DRL': (True, 2, 4, True),
+    '../gerbonara-drill/orcad/arena_12-12_v6_L1-L6.drl': (False, 3, 3, True),  # METRIC; fixed width: X-108128
 }
 
 
@@ -37,9 +42,10 @@ def read(path, inch, ints, decs, lz):
             size = float(m.group(2))
             tools[int(m.group(1))] = size * {'MILS': 0.0254, 'MM': 1.0, 'INCH': 25.4}[m.group(3)]
             continue
-        if not line or line.startswith(';') or line in ('%', 'M48', 'M30', 'G90', 'M71', 'M72'):
-            continue
-        m = re.match(r'T(\d+)C([\d.]+)', line)
+        if not line or line.startswith(';') or line in ('%', 'M48', 'M30', 'G90', 'G05', 'M71', 'M72') or line[:5] in (
+                'INCH,', 'METRI'):
+            continue  # the format is given by hand, not read
+        m = re.match(r'T(\d+)(?:F\d+)?(?:S\d+)?C([\d.]+)', line)
         if m:
             tools[int(m.group(1))] = float(m.group(2)) * unit
             tool = int(m.group(1))  # without a header (PADS) the definition selects it too
