@@ -488,3 +488,22 @@ TEST(cli_test, a_file_given_twice_is_read_once_with_a_warning) {
   auto quiet = acodrill_run("plan " + q(drl) + " " + q(drl) + " -o " + q(nc_twice) + " --iterations 5 --quiet");
   EXPECT_EQ(quiet.err, "");
 }
+
+// Issue 71: a drawing whose holes are all round contours, planned with and without --round-contours.
+TEST(cli_test, plan_on_a_drawing_of_round_contours_only_says_how_to_read_them) {
+  testutil::TempDir t;
+  const std::string in = testutil::data("dxf-contours/inkscape_r12_line_polygons.dxf");
+  auto r = testutil::acodrill_run("plan " + testutil::shell_quote(in) + " -o " + (t / "a.nc"));
+  EXPECT_EQ(r.code, 2);
+  EXPECT_EQ(testutil::count_lines(r.err), 1) << r.err;
+  EXPECT_THAT(r.err, ::testing::HasSubstr("no CIRCLE to drill, but 4 round closed contour(s) drawn without one (4 LINE): "
+                                          "--round-contours reads them as holes"));
+  EXPECT_FALSE(std::filesystem::exists(t / "a.nc"));
+  r = testutil::acodrill_run("plan " + testutil::shell_quote(in) + " -o " + (t / "a.nc") + " --round-contours --report " +
+                             (t / "r.json") + " -q");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_THAT(testutil::slurp(t / "r.json"), ::testing::HasSubstr("\"round_contours\""));
+  EXPECT_THAT(testutil::slurp(t / "r.json"), ::testing::HasSubstr("\"read_as_holes\": 4"));
+  auto v = testutil::acodrill_run("verify " + (t / "a.nc") + " --holes " + testutil::shell_quote(in) + " --round-contours -q");
+  EXPECT_EQ(v.code, 0) << v.out;
+}

@@ -359,3 +359,93 @@ TEST(dxf_reader_bad_input, truncated_binary_dxf) {
   auto [line, what] = error_of(bin.substr(0, bin.size() / 2));
   EXPECT_NE(what, "no error");
 }
+
+// Issue 71: holes drawn without a CIRCLE (tests/data/make_round_contours.py:
+// each file as a CAD writes it, with the holes ezdxf's own geometry and a
+// numpy circle fit find). Without --round-contours only the CIRCLEs are
+// holes and the round contours are named in a warning; with it, exactly the
+// round contours are added, at ezdxf's fitted centre within 1 µm.
+class RoundContourTest : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(RoundContourTest, reads_exactly_the_round_contours_when_asked_and_names_them_when_not) {
+  const std::string path = GetParam();
+  const std::string stem = path.substr(0, path.size() - 4);
+  const aco::HoleSet circles = testutil::read_holes_csv(testutil::slurp(stem + ".holes.csv"));
+  const aco::HoleSet round = testutil::read_holes_csv(testutil::slurp(stem + ".round.csv"));
+  const std::string text = testutil::slurp(path);
+  dxf::ReadResult plain = dxf::read_holes(text);
+  EXPECT_EQ(compare_sets(plain.holes, circles), "");
+  EXPECT_EQ(plain.round_contours, round.size() - circles.size());
+  const bool named = std::any_of(plain.diagnostics.begin(), plain.diagnostics.end(), [](const dxf::Diagnostic& d) {
+    return d.message.find("--round-contours reads them as holes") != std::string::npos;
+  });
+  EXPECT_EQ(named, round.size() > circles.size()) << "told exactly when there are some";
+  dxf::ReadOptions o;
+  o.round_contours = true;
+  dxf::ReadResult r = dxf::read_holes(text, o);
+  ASSERT_EQ(r.holes.size(), round.size());
+  EXPECT_EQ(r.round_contour_holes, round.size() - circles.size());
+  std::vector<char> used(r.holes.size(), 0);
+  for (const aco::Hole& w : round) {
+    bool found = false;
+    for (std::size_t i = 0; i < r.holes.size() && !found; ++i) {
+      if (used[i] || aco::euclidean(r.holes[i].center, w.center) > 1e-6) continue;
+      used[i] = 1;
+      found = true;
+      EXPECT_NEAR(r.holes[i].diameter, w.diameter, 1e-3) << w.center.x << "," << w.center.y;
+      EXPECT_EQ(r.holes[i].layer, w.layer);
+    }
+    EXPECT_TRUE(found) << "no hole within 1 um of (" << w.center.x << ", " << w.center.y << ") in " << path;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(ezdxf_written, RoundContourTest, ::testing::ValuesIn(fixtures("dxf-contours")), fixture_name);
+
+TEST(dxf_reader_test, round_contours_add_nothing_to_drawings_without_them) {
+  // Every other fixture, real exports included (a SolidWorks panel drawn in
+  // ARCs and LINEs: rounded corners and slots, no hole), reads the same.
+  dxf::ReadOptions o;
+  o.round_contours = true;
+  for (const std::string folder : {"dxf", "real-dxf", "dxf-cases"}) {
+    for (const std::string& path : fixtures(folder)) {
+      const std::string text = testutil::slurp(path);
+      dxf::ReadResult plain = dxf::read_holes(text), with = dxf::read_holes(text, o);
+      EXPECT_EQ(compare_sets(with.holes, plain.holes), "") << path;
+      EXPECT_EQ(with.round_contours, 0u) << path;
+    }
+  }
+}
+
+TEST(dxf_reader_test, round_contours_follow_the_layer_filter_and_their_tolerance) {
+  const std::string text = testutil::slurp(data("dxf-contours/inkscape_r12_line_polygons.dxf"));
+  dxf::ReadOptions o;
+  o.round_contours = true;
+  o.layers = {"OUTLINE"};
+  EXPECT_EQ(dxf::read_holes(text, o).holes.size(), 0u);
+  o.layers = {"hol*"};
+  EXPECT_EQ(dxf::read_holes(text, o).holes.size(), 4u);
+  // An octagon is 7.6 % off its circle: a hole only with the tolerance raised to 10 %.
+  const std::string octagons = testutil::slurp(data("dxf-contours/openscad_lwpolyline_polygons.dxf"));
+  dxf::ReadOptions loose;
+  loose.round_contours = true;
+  EXPECT_EQ(dxf::read_holes(octagons, loose).holes.size(), 2u);
+  loose.round_tolerance = 0.10;
+  EXPECT_EQ(dxf::read_holes(octagons, loose).holes.size(), 3u) << "the square stays no hole";
+}
+
+TEST(dxf_reader_test, a_header_in_inch_on_a_drawing_in_mm_is_named_and_can_be_overridden) {
+  const std::string text = testutil::slurp(data("dxf-contours/onshape_inch_header_mm_drawing.dxf"));
+  dxf::ReadResult r = dxf::read_holes(text);
+  ASSERT_EQ(r.holes.size(), 8u);
+  EXPECT_NEAR(r.holes[0].diameter, 5.2 * 25.4, 1e-9);
+  ASSERT_EQ(r.diagnostics.size(), 1u);
+  EXPECT_THAT(r.diagnostics[0].message, ::testing::HasSubstr("$INSUNITS 1"));
+  EXPECT_THAT(r.diagnostics[0].message, ::testing::HasSubstr("--dxf-units mm"));
+  dxf::ReadOptions o;
+  o.units_override_mm = 1.0;
+  dxf::ReadResult mm = dxf::read_holes(text, o);
+  EXPECT_NEAR(mm.holes[0].diameter, 5.2, 1e-9);
+  EXPECT_TRUE(mm.diagnostics.empty());
+  // A drawing in mm with big holes is not suspect: mm is no unit to blow it up.
+  EXPECT_TRUE(dxf::read_holes(dxf_doc(circle(0, 0, 40) + circle(200, 0, 40), "", "9\n$INSUNITS\n70\n4\n")).diagnostics.empty());
+}

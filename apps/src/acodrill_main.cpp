@@ -111,6 +111,9 @@ struct InputArgs {
   double slot_pitch = 0.0;
   std::string apertures;
   std::string excellon_format;
+  bool round_contours = false;
+  double round_tolerance_pct = 2.5;
+  std::string dxf_units;
 };
 
 // "--excellon-format inch,2:4,lz": units, integer:decimal digits, the zeros kept.
@@ -146,6 +149,18 @@ void add_input_options(CLI::App* cmd, InputArgs& a) {
   cmd->add_option("--input-units", a.input_units,
                   "mm | inch: units of inputs that do not say (default mm; an Excellon file that does not say is inch, "
                   "its format's own default)");
+  cmd->add_flag("--round-contours", a.round_contours,
+                "DXF: also read closed contours that are circles as holes: SPLINE loops (Fusion 360), polygons of LINEs "
+                "or closed polylines (OpenSCAD, Inkscape), arc pairs, loops of LINEs and ARCs, full-circle ARCs, "
+                "circular ELLIPSEs; each at its fitted centre, with the diameter of the circle through its points "
+                "(a polygon's vertices). Without it they are counted in a warning, not read");
+  cmd->add_option("--round-tolerance", a.round_tolerance_pct,
+                  "How round a contour must be to be a hole: the largest gap between it and its circle, in percent of "
+                  "the radius (default 2.5: polygons of 14 sides or more; 10 takes 8 sides)")
+      ->check(CLI::Range(0.01, 30.0));
+  cmd->add_option("--dxf-units", a.dxf_units,
+                  "mm | cm | m | inch | feet: the unit a DXF is drawn in, whatever its $INSUNITS header says (Onshape "
+                  "writes inch for drawings made in mm)");
   cmd->add_option("--excellon-format", a.excellon_format,
                   "UNITS,I:D,ZEROS: how an Excellon file's numbers are written, for a file that does not say or says it "
                   "wrong; wins over the file (e.g. inch,2:4,lz: inch, 2 integer and 4 decimal digits, leading zeros kept; "
@@ -192,6 +207,14 @@ app::InputOptions to_input_options(const InputArgs& a) {
     o.aperture_list_path = a.apertures;
   }
   if (!a.excellon_format.empty()) o.excellon_format = parse_excellon_format(a.excellon_format);
+  o.dxf.round_contours = a.round_contours;
+  o.dxf.round_tolerance = a.round_tolerance_pct / 100.0;
+  if (!a.dxf_units.empty()) {
+    const std::map<std::string, double> units = {{"mm", 1.0}, {"cm", 10.0}, {"m", 1000.0}, {"inch", 25.4}, {"in", 25.4}, {"feet", 304.8}, {"ft", 304.8}};
+    auto it = units.find(a.dxf_units);
+    if (it == units.end()) throw app::UserError("--dxf-units must be mm, cm, m, inch or feet (got \"" + a.dxf_units + "\")");
+    o.dxf.units_override_mm = it->second;
+  }
   return o;
 }
 
@@ -717,6 +740,12 @@ int cmd_plan(const PlanArgs& a, const SolverArgs& s, const InputArgs& in_args) {
   if (a.material.empty() && board) o.material = planning::Material::Pcb;
   o.thickness_mm = a.thickness.value_or(o.material == planning::Material::Pcb ? 1.6 : 6.35);
   o.program.r_plane_mm = planning::r_plane_mm(o.machine, o.material);
+  if (loaded.holes.empty() && loaded.round_contours > 0) {
+    throw app::UserError(a.input == "-" ? "<stdin>" : a.input, 0,
+                         "no CIRCLE to drill, but " + std::to_string(loaded.round_contours) +
+                             " round closed contour(s) drawn without one (" + loaded.round_contour_kinds +
+                             "): --round-contours reads them as holes");
+  }
   if (loaded.holes.empty()) throw app::UserError(a.input == "-" ? "<stdin>" : a.input, 0, "no holes to drill");
   std::string source;  // the job's inputs, as messages and the program's header name them
   for (const std::string& input : a.inputs) source += (source.empty() ? "" : " + ") + (input == "-" ? std::string("<stdin>") : input);

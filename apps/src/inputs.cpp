@@ -73,6 +73,11 @@ Job load_job(const std::vector<std::string>& paths, const InputOptions& options)
     for (const Note& n : part.skipped) all.skipped.push_back({n.line, shown + ": " + n.message});
     for (const Note& n : part.warnings) all.warnings.push_back({n.line, shown + ": " + n.message});
     for (const std::string& a : part.assumptions) all.assumptions.push_back(shown + ": " + a);
+    all.round_contours += part.round_contours;
+    all.round_contour_holes += part.round_contour_holes;
+    if (!part.round_contour_kinds.empty()) {
+      all.round_contour_kinds += (all.round_contour_kinds.empty() ? "" : "; ") + shown + ": " + part.round_contour_kinds;
+    }
     all.duplicates_removed += part.duplicates_removed;
     all.skipped_by_filter += part.skipped_by_filter;
     all.slots_drilled += part.slots_drilled;

@@ -117,6 +117,12 @@ std::string report_json(const aco::HoleSet& holes, const PlanResult& plan, const
   j["sources"] = sources;
   // What a reader assumed because the input did not say (Excellon units and number format).
   if (ctx.input && !ctx.input->assumptions.empty()) j["input_assumptions"] = ctx.input->assumptions;
+  // DXF: round closed contours drawn without a CIRCLE, read as holes or only counted.
+  if (ctx.input && ctx.input->round_contours > 0) {
+    j["round_contours"] = {{"found", ctx.input->round_contours},
+                           {"read_as_holes", ctx.input->round_contour_holes},
+                           {"drawn_with", ctx.input->round_contour_kinds}};
+  }
   j["source"] = ctx.source;
   j["program"] = ctx.program;
   return j.dump(2) + "\n";

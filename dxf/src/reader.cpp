@@ -8,12 +8,16 @@
 #include <array>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
+#include <map>
+#include <optional>
 #include <string>
 #include <unordered_map>
 #include <unordered_set>
 
 #include "aco/hole_set.h"
+#include "contours.h"
 #include "dxf/reader.h"
 #include "tag_reader.h"
 
@@ -120,6 +124,7 @@ struct Block {
   Vec3 base{0, 0, 0};
   std::vector<Circle> circles;
   std::vector<Insert> inserts;
+  std::vector<contours::Piece> pieces;  // LINE, ARC, polylines, SPLINE, ELLIPSE: maybe round contours
   std::vector<std::pair<bool, std::size_t>> order;  // (is_insert, index): file order
   std::uint32_t line = 0;
 };
@@ -168,6 +173,12 @@ class Parser {
   void read_entities();
   void expand();
   void emit_circle(const Circle& c, const Affine& to_world);
+  // A piece of a possible contour, when the entity at tag_ is one (nullopt: skip it).
+  std::optional<contours::Piece> read_piece(std::string_view type);
+  std::vector<Tag> read_tags();
+  void place_piece(const contours::Piece& p, const Affine& to_world);
+  void add_round_contours(double unit);
+  void check_units(double unit);
   void expand_insert(const Insert& ins, const Affine& parent, int depth);
   bool is_paper(const Fields& f) const {
     return f.paper_space || (!f.owner.empty() && paper_records_.count(upper(f.owner)) != 0);
@@ -185,6 +196,10 @@ class Parser {
   std::unordered_map<std::string, std::size_t> block_index_;  // upper-case name → blocks_
   std::vector<Circle> model_circles_;
   std::vector<Insert> model_inserts_;
+  std::vector<contours::Piece> model_pieces_;
+  std::vector<contours::Placed> placed_;
+  std::size_t placed_points_ = 0;
+  bool contours_cut_ = false;
   // Model-space entities in file order: (is_insert, index into the vector above).
   std::vector<std::pair<bool, std::size_t>> model_order_;
   bool saw_entities_ = false;
@@ -234,6 +249,10 @@ Fields Parser::read_fields(bool is_insert) {
   return f;
 }
 
+bool is_piece_type(std::string_view type) {
+  return type == "LINE" || type == "ARC" || type == "LWPOLYLINE" || type == "POLYLINE" || type == "SPLINE" || type == "ELLIPSE";
+}
+
 Circle to_circle(const Fields& f) {
   if (!f.has_radius) throw ReadError(f.line, "CIRCLE has no radius (group code 40)");
   if (!(f.radius > 0.0)) {
@@ -269,6 +288,171 @@ Insert to_insert(const Fields& f) {
   ins.extrusion = f.extrusion;
   ins.line = f.line;
   return ins;
+}
+
+std::vector<Tag> Parser::read_tags() {
+  std::vector<Tag> tags;
+  while (advance() && tag_.code != 0) tags.push_back(tag_);
+  return tags;
+}
+
+std::optional<contours::Piece> Parser::read_piece(std::string_view type) {
+  contours::Piece p;
+  p.kind = type;
+  p.line = tag_.line;
+  p.layer = "0";
+  std::vector<Tag> tags = read_tags();
+  bool paper = false;
+  std::string_view owner;
+  for (const Tag& t : tags) {
+    if (t.code == 8) p.layer = trim(t.value);
+    if (t.code == 67) paper = parse_int(t, result_.diagnostics) == 1;
+    if (t.code == 330 && owner.empty()) owner = trim(t.value);
+    if (t.code == 210) p.extrusion[0] = parse_double(t);
+    if (t.code == 220) p.extrusion[1] = parse_double(t);
+    if (t.code == 230) p.extrusion[2] = parse_double(t);
+  }
+  if (paper || (!owner.empty() && paper_records_.count(upper(owner)) != 0)) {
+    if (type == "POLYLINE") {
+      while (at0("VERTEX")) read_tags();
+      if (at0("SEQEND")) read_tags();
+    }
+    return std::nullopt;
+  }
+  auto number = [&](int code, double fallback) {
+    for (const Tag& t : tags) {
+      if (t.code == code) return parse_double(t);
+    }
+    return fallback;
+  };
+  auto flags = [&](const std::vector<Tag>& ts) {
+    for (const Tag& t : ts) {
+      if (t.code == 70) return parse_int(t, result_.diagnostics);
+    }
+    return 0;
+  };
+  if (type == "LINE") {
+    p.extrusion = {0, 0, 1};  // LINE is in world coordinates
+    const Vec3 a{number(10, 0), number(20, 0), number(30, 0)}, b{number(11, 0), number(21, 0), number(31, 0)};
+    p.points = {a, b};
+  } else if (type == "ARC") {
+    contours::add_arc(p, {number(10, 0), number(20, 0), number(30, 0)}, number(40, 0), number(50, 0), number(51, 360));
+    if (!(number(40, 0) > 0)) return std::nullopt;
+  } else if (type == "ELLIPSE") {
+    // World coordinates: centre, major axis end (relative), minor/major ratio, start and end parameters.
+    const Vec3 c{number(10, 0), number(20, 0), number(30, 0)}, major{number(11, 0), number(21, 0), number(31, 0)};
+    const Vec3 n = p.extrusion;
+    const double ratio = number(40, 1), t0 = number(41, 0);
+    const double raw_t1 = number(42, 2 * M_PI);
+    if (std::fabs(t0) > 1e6 || std::fabs(raw_t1) > 1e6) return std::nullopt;
+    double span = std::fmod(raw_t1 - t0, 2 * M_PI);
+    if (span <= 1e-12) span += 2 * M_PI;
+    const double t1 = t0 + span;
+    const Vec3 minor_dir = cross(n, major);
+    const double len = norm(minor_dir), major_len = norm(major);
+    if (!(len > 0) || !(major_len > 0)) return std::nullopt;
+    const int steps = std::max(4, static_cast<int>(std::ceil((t1 - t0) * 180.0 / M_PI / 5.0)));
+    for (int i = 0; i <= steps; ++i) {
+      const double t = t0 + (t1 - t0) * i / steps;
+      Vec3 q{};
+      for (int k = 0; k < 3; ++k) q[k] = c[k] + std::cos(t) * major[k] + std::sin(t) * ratio * major_len * minor_dir[k] / len;
+      p.points.push_back(q);
+    }
+    p.extrusion = {0, 0, 1};
+  } else if (type == "SPLINE") {
+    int degree = 3;
+    std::vector<double> knots, weights;
+    std::vector<Vec3> control, fit;
+    for (const Tag& t : tags) {
+      switch (t.code) {
+        case 71: degree = parse_int(t, result_.diagnostics); break;
+        case 40: knots.push_back(parse_double(t)); break;
+        case 41: weights.push_back(parse_double(t)); break;
+        case 10: control.push_back({parse_double(t), 0, 0}); break;
+        case 20: if (!control.empty()) control.back()[1] = parse_double(t); break;
+        case 30: if (!control.empty()) control.back()[2] = parse_double(t); break;
+        case 11: fit.push_back({parse_double(t), 0, 0}); break;
+        case 21: if (!fit.empty()) fit.back()[1] = parse_double(t); break;
+        case 31: if (!fit.empty()) fit.back()[2] = parse_double(t); break;
+        default: break;
+      }
+    }
+    p.points = contours::sample_spline(degree, knots, control, weights);
+    if (p.points.empty()) p.points = fit;  // fit points lie on the curve
+    p.extrusion = {0, 0, 1};
+  } else if (type == "LWPOLYLINE" || type == "POLYLINE") {
+    std::vector<Vec3> vertices;
+    std::vector<double> bulges;
+    int flag = flags(tags);
+    if (type == "LWPOLYLINE") {
+      const double z = number(38, 0);
+      for (const Tag& t : tags) {
+        if (t.code == 10) vertices.push_back({parse_double(t), 0, z}), bulges.push_back(0);
+        if (t.code == 20 && !vertices.empty()) vertices.back()[1] = parse_double(t);
+        if (t.code == 42 && !bulges.empty()) bulges.back() = parse_double(t);
+      }
+    } else {
+      const double z = number(30, 0);
+      while (at0("VERTEX")) {
+        const std::vector<Tag> v = read_tags();
+        Vec3 q{0, 0, z};
+        double bulge = 0;
+        int vflag = 0;
+        for (const Tag& t : v) {
+          if (t.code == 10) q[0] = parse_double(t);
+          if (t.code == 20) q[1] = parse_double(t);
+          if (t.code == 30 && (flag & 8)) q[2] = parse_double(t);
+          if (t.code == 42) bulge = parse_double(t);
+          if (t.code == 70) vflag = parse_int(t, result_.diagnostics);
+        }
+        if (vflag & 16) continue;  // a spline frame's control point, not on the curve
+        vertices.push_back(q);
+        bulges.push_back(bulge);
+      }
+      if (at0("SEQEND")) read_tags();
+      if (flag & (16 | 64)) return std::nullopt;  // meshes are no contours
+      if (flag & 8) p.extrusion = {0, 0, 1};       // a 3D polyline is in world coordinates
+    }
+    if (vertices.size() < 2) return std::nullopt;
+    const bool closed = (flag & 1) != 0;
+    for (std::size_t i = 0; i + 1 < vertices.size(); ++i) contours::add_bulge(p, vertices[i], vertices[i + 1], bulges[i]);
+    if (closed) {
+      contours::add_bulge(p, vertices.back(), vertices.front(), bulges.back());
+      if (p.points.size() > 1) p.points.pop_back();  // the first vertex again
+      p.closed = true;
+    }
+  }
+  if (p.points.size() < 2) return std::nullopt;
+  return p;
+}
+
+void Parser::place_piece(const contours::Piece& p, const Affine& to_world) {
+  const Affine m = to_world.then_after(ocs_to_wcs(make_ocs(p.extrusion, p.line)));
+  contours::Placed out;
+  out.kind = p.kind;
+  out.closed = p.closed;
+  out.layer = p.layer;
+  out.line = p.line;
+  // Contours are looked for on at most this many points; a drawing past it
+  // (block arrays of linework) keeps its CIRCLEs and is told the rest was not examined.
+  constexpr std::size_t kMaxContourPoints = 5'000'000;
+  if (placed_points_ + p.points.size() > kMaxContourPoints) {
+    if (!contours_cut_) {
+      contours_cut_ = true;
+      result_.diagnostics.push_back({Severity::Warning, p.line,
+                                     "more than 5000000 points on lines, arcs and curves: contours from here on are not "
+                                     "examined for round holes"});
+    }
+    return;
+  }
+  out.points.reserve(p.points.size());
+  for (const Vec3& q : p.points) {
+    const Vec3 w = m.apply(q);
+    if (!std::isfinite(w[0]) || !std::isfinite(w[1])) return;  // placed beyond the representable: no contour
+    out.points.push_back({w[0], w[1]});
+  }
+  placed_points_ += out.points.size();
+  placed_.push_back(std::move(out));
 }
 
 void Parser::read_header() {
@@ -339,6 +523,8 @@ void Parser::read_blocks() {
       Fields f = read_fields(true);
       current->order.emplace_back(true, current->inserts.size());
       current->inserts.push_back(to_insert(f));
+    } else if (current != nullptr && !current_is_paper && is_piece_type(type)) {
+      if (auto piece = read_piece(type)) current->pieces.push_back(std::move(*piece));
     } else {
       skip_to_next_0();
     }
@@ -367,6 +553,8 @@ void Parser::read_entities() {
         model_order_.emplace_back(true, model_inserts_.size());
         model_inserts_.push_back(ins);
       }
+    } else if (is_piece_type(type)) {
+      if (auto piece = read_piece(type)) model_pieces_.push_back(std::move(*piece));
     } else {
       skip_to_next_0();
     }
@@ -496,7 +684,7 @@ void Parser::expand_insert(const Insert& ins, const Affine& parent, int depth) {
                                   " deep at block \"" + blocks_[index].name + "\"");
   }
   const Block& block = blocks_[index];
-  if (block.order.empty()) {
+  if (block.order.empty() && block.pieces.empty()) {
     // Nothing to place: count the references without composing a transform each.
     references_ += static_cast<std::size_t>(ins.rows) * static_cast<std::size_t>(ins.columns);
     if (references_ > options_.max_block_references) {
@@ -518,6 +706,7 @@ void Parser::expand_insert(const Insert& ins, const Affine& parent, int depth) {
         if (is_insert) expand_insert(block.inserts[i], m, depth + 1);
         else emit_circle(block.circles[i], m);
       }
+      for (const contours::Piece& p : block.pieces) place_piece(p, m);
     }
   }
   stack_.pop_back();
@@ -530,6 +719,7 @@ void Parser::expand() {
     if (is_insert) expand_insert(model_inserts_[i], identity, 0);
     else emit_circle(model_circles_[i], identity);
   }
+  for (const contours::Piece& p : model_pieces_) place_piece(p, identity);
   if (ellipses_ > 0) {
     result_.diagnostics.push_back(
         {Severity::Warning, first_ellipse_line_,
@@ -551,6 +741,7 @@ void Parser::expand() {
       unit = options_.default_unit_mm;
     }
   }
+  if (options_.units_override_mm > 0) unit = options_.units_override_mm;
   result_.unit_mm = unit;
 
   // Scale and filter, then drop exact duplicates (same centre and diameter within 1e-6 mm).
@@ -572,6 +763,79 @@ void Parser::expand() {
   }
   result_.duplicates_removed = aco::remove_duplicate_holes(out, kTol);
   raw_.clear();
+  add_round_contours(unit);
+  check_units(unit);
+}
+
+void Parser::add_round_contours(double unit) {
+  const std::vector<contours::Found> found = contours::round_loops(placed_, options_.round_tolerance);
+  placed_.clear();
+  if (found.empty()) return;
+  // The CIRCLEs' holes by X, to find a contour drawn on one (one hole).
+  std::vector<std::pair<double, std::size_t>> by_x;
+  for (std::size_t i = 0; i < result_.holes.size(); ++i) by_x.push_back({result_.holes[i].center.x, i});
+  std::sort(by_x.begin(), by_x.end());
+  std::map<std::string, std::size_t> kinds;
+  std::uint32_t first_line = 0;
+  for (const contours::Found& f : found) {
+    aco::Hole h;
+    h.center = {f.center.x * unit, f.center.y * unit};
+    h.diameter = f.diameter * unit;
+    h.layer = f.layer;
+    h.source_line = f.line;
+    const double tol = options_.round_tolerance * h.diameter / 2;
+    bool on_circle = false;
+    for (auto it = std::lower_bound(by_x.begin(), by_x.end(), std::make_pair(h.center.x - tol, std::size_t{0}));
+         it != by_x.end() && it->first <= h.center.x + tol && !on_circle; ++it) {
+      const aco::Hole& c = result_.holes[it->second];
+      on_circle = aco::euclidean(c.center, h.center) <= tol && std::fabs(c.diameter - h.diameter) <= 2 * tol;
+    }
+    if (on_circle) continue;  // drawn twice: the CIRCLE is the hole
+    ++result_.round_contours;
+    ++kinds[f.kinds];
+    if (first_line == 0) first_line = f.line;
+    if (!options_.round_contours) continue;
+    if (!selected(h, options_)) {
+      ++result_.skipped_by_filter;
+      continue;
+    }
+    ++result_.round_contour_holes;
+    result_.holes.push_back(std::move(h));
+  }
+  for (const auto& [kind, n] : kinds) {
+    result_.round_contour_kinds += (result_.round_contour_kinds.empty() ? "" : ", ") + std::to_string(n) + " " + kind;
+  }
+  if (result_.round_contours > 0 && !options_.round_contours) {
+    result_.diagnostics.push_back({Severity::Warning, first_line,
+                                   std::to_string(result_.round_contours) + " round closed contour(s) drawn without a CIRCLE (" +
+                                       result_.round_contour_kinds + "): not read; --round-contours reads them as holes"});
+  }
+  if (options_.round_contours) result_.duplicates_removed += aco::remove_duplicate_holes(result_.holes, 1e-6);
+}
+
+// A header that states its units wrongly (Onshape writes inch for a drawing
+// made in mm): holes and an extent that make no sense in those units.
+void Parser::check_units(double unit) {
+  // Only a unit larger than the millimetre can blow a drawing up so.
+  if (insunits_ <= 0 || insunits_to_mm(insunits_) <= 1.0 || options_.units_override_mm > 0 || result_.holes.empty()) return;
+  std::vector<double> d;
+  double x0 = result_.holes[0].center.x, x1 = x0, y0 = result_.holes[0].center.y, y1 = y0;
+  for (const aco::Hole& h : result_.holes) {
+    d.push_back(h.diameter);
+    x0 = std::min(x0, h.center.x), x1 = std::max(x1, h.center.x);
+    y0 = std::min(y0, h.center.y), y1 = std::max(y1, h.center.y);
+  }
+  std::nth_element(d.begin(), d.begin() + static_cast<std::ptrdiff_t>(d.size() / 2), d.end());
+  const double median = d[d.size() / 2], extent = std::max(x1 - x0, y1 - y0);
+  if (median <= 50.0 && extent <= 2000.0) return;
+  const char* name = insunits_ == 1 ? "inch" : insunits_ == 2 ? "feet" : insunits_ == 4 ? "mm" : insunits_ == 5 ? "cm" : insunits_ == 6 ? "m" : "its unit";
+  char text[320];
+  std::snprintf(text, sizeof text,
+                "the drawing says its unit is %s ($INSUNITS %d), which makes its holes D%.1f mm (median) over %.0f mm: "
+                "if it was drawn in another unit (Onshape writes inch for mm drawings), give --dxf-units mm",
+                name, insunits_, median, extent);
+  result_.diagnostics.push_back({Severity::Warning, 0, text});
+  (void)unit;
 }
 
 void check_text_encoding(std::string_view data) {

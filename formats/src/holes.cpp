@@ -169,6 +169,9 @@ LoadedHoles parse_holes(const std::string& path, std::string_view data, const In
         out.holes = std::move(r.holes);
         out.duplicates_removed = r.duplicates_removed;
         out.skipped_by_filter = r.skipped_by_filter;
+        out.round_contours = r.round_contours;
+        out.round_contour_holes = r.round_contour_holes;
+        out.round_contour_kinds = r.round_contour_kinds;
         for (const auto& d : r.diagnostics) out.warnings.push_back({d.line, d.message});
       } catch (const dxf::ReadError& e) {
         throw InputError(shown, e.line(), e.what());

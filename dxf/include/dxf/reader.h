@@ -1,7 +1,8 @@
 #pragma once
 /**
  * DXF → holes. A layered reader after ezdxf: bytes → group-code tags →
- * sections → entities → holes. Every CIRCLE in model space becomes a hole,
+ * sections → entities → holes. Every CIRCLE in model space becomes a hole
+ * (and, when asked, every closed contour that is round: contours.h),
  * including those reached through INSERT/MINSERT (nested, scaled, rotated,
  * mirrored, arrayed), placed in world coordinates (OCS applied) and converted
  * to millimetres from $INSUNITS.
@@ -56,6 +57,15 @@ struct ReadOptions {
   std::size_t max_holes = 5'000'000;
   std::size_t max_block_references = 10'000'000;
   int max_block_depth = 200;
+  // Issue 71: closed contours that are circles within `round_tolerance` (the
+  // largest deviation of the contour from its fitted circle, a fraction of
+  // the radius) are holes too: SPLINE loops, polygons of LINEs or closed
+  // polylines, arc pairs, loops of LINEs and ARCs, full-circle ARCs, circular
+  // ELLIPSEs. Off, they are counted and named in a warning, not read.
+  bool round_contours = false;
+  double round_tolerance = 0.025;
+  // Millimetres per drawing unit whatever $INSUNITS says (0: as the drawing says).
+  double units_override_mm = 0.0;
 };
 
 struct ReadResult {
@@ -63,6 +73,10 @@ struct ReadResult {
   std::vector<Diagnostic> diagnostics;  // warnings and notes, in file order
   std::size_t duplicates_removed = 0;
   std::size_t skipped_by_filter = 0;    // dropped by --layer / --min/--max-diameter
+  // Round closed contours drawn without a CIRCLE: read as holes (round_contours), or only counted.
+  std::size_t round_contours = 0;
+  std::size_t round_contour_holes = 0;   // of them, read as holes (not on a CIRCLE, selected)
+  std::string round_contour_kinds;       // "12 SPLINE, 40 LINE, 2 ARC+LWPOLYLINE"
   std::string version;                  // $ACADVER, e.g. "AC1024"; empty for R10/R12 files without it
   double unit_mm = 1.0;                 // millimetres per drawing unit that was applied
   bool binary = false;

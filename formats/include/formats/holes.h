@@ -88,6 +88,10 @@ struct LoadedHoles {
   // What a reader had to assume because the file did not say (Excellon
   // units and number format): shown in the summary and the report.
   std::vector<std::string> assumptions;
+  // DXF: round closed contours drawn without a CIRCLE, how many were read as
+  // holes (--round-contours), and what they are drawn with ("12 SPLINE, 40 LINE").
+  std::size_t round_contours = 0, round_contour_holes = 0;
+  std::string round_contour_kinds;
   std::size_t duplicates_removed = 0;
   // A drilling program: holes it drills again at the same place (kept in `holes`).
   std::size_t drilled_again = 0;
