@@ -87,7 +87,7 @@ class Reader {
   std::map<int, double> comment_tools_mm_;
   // The zeros the numbers' shapes say are kept, where the file does not state it.
   Format::Zeros detected_zeros_ = Format::Zeros::Unknown;
-  bool implicit_numbers_ = false;  // a coordinate without a decimal point was read
+  mutable bool implicit_numbers_ = false;  // a coordinate without a decimal point was read (by coordinate())
   int tool_ = -1;                // -1: none selected yet; 0: unloaded (T0)
   double x_ = 0, y_ = 0;         // file units, before the G93 offset
   double off_x_ = 0, off_y_ = 0;
@@ -256,14 +256,10 @@ void Reader::allegro_tool_comment(std::string_view s) {
 
 // Allegro's nc_param.txt: the number format its drill files do not state.
 void Reader::apply_nc_param(std::string_view text) {
-  std::size_t pos = 0;
-  while (pos < text.size()) {
-    std::size_t nl = text.find('\n', pos);
-    if (nl == std::string_view::npos) nl = text.size();
-    std::string_view l = trim(text.substr(pos, nl - pos));
-    pos = nl + 1;
+  for_each_line(text, [&](std::uint32_t, std::string_view raw) {
+    const std::string_view l = trim(raw);
     const std::size_t space = l.find_first_of(" \t");
-    if (space == std::string_view::npos) continue;
+    if (space == std::string_view::npos) return true;
     const std::string_view key = l.substr(0, space), value = trim(l.substr(space));
     int n = 0;
     if (key == "INTEGER-PLACES" && std::from_chars(value.data(), value.data() + value.size(), n).ec == std::errc() && n > 0 && n < 8) {
@@ -281,7 +277,8 @@ void Reader::apply_nc_param(std::string_view text) {
       if (value == "YES") fmt_.zeros = Format::Zeros::Leading;
       fmt_.zeros_stated = true;
     }
-  }
+    return true;
+  });
   // Neither suppressed: every number has all its digits, read from the left.
   if (fmt_.zeros == Format::Zeros::Unknown && fmt_.zeros_stated) fmt_.zeros = Format::Zeros::Leading;
 }
@@ -291,13 +288,9 @@ void Reader::apply_nc_param(std::string_view text) {
 // starting with 0 only TZ. Both kinds seen: fixed width, either reading.
 void Reader::detect_zeros(std::string_view data) {
   std::size_t leading = 0, trailing = 0;
-  std::size_t pos = 0;
-  while (pos < data.size()) {
-    std::size_t nl = data.find('\n', pos);
-    if (nl == std::string_view::npos) nl = data.size();
-    std::string_view l = trim(data.substr(pos, nl - pos));
-    pos = nl + 1;
-    if (l.empty() || l[0] == ';' || l[0] == 'T' || l[0] == 'M' || l[0] == 'F') continue;
+  for_each_line(data, [&](std::uint32_t, std::string_view raw) {
+    const std::string_view l = trim(raw);
+    if (l.empty() || l[0] == ';' || l[0] == 'T' || l[0] == 'M' || l[0] == 'F') return true;
     for (std::size_t i = 0; i < l.size(); ++i) {
       if (l[i] != 'X' && l[i] != 'Y') continue;
       std::size_t j = i + 1;
@@ -311,14 +304,15 @@ void Reader::detect_zeros(std::string_view data) {
         if (digits.back() == '0') ++trailing;
       }
     }
-  }
+    return true;
+  });
   if (leading > 0 && trailing == 0) detected_zeros_ = Format::Zeros::Leading;
   if (trailing > 0 && leading == 0) detected_zeros_ = Format::Zeros::Trailing;
 }
 
 double Reader::coordinate(std::string_view text) const {
   if (text.find('.') != std::string_view::npos) return plain_number(text);
-  const_cast<Reader*>(this)->implicit_numbers_ = true;
+  implicit_numbers_ = true;
   bool negative = false;
   if (!text.empty() && (text[0] == '-' || text[0] == '+')) {
     negative = text[0] == '-';
