@@ -3,7 +3,9 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
+#include <sstream>
 #include <regex>
 #include <set>
 #include <nlohmann/json.hpp>
@@ -314,7 +316,7 @@ TEST(cli_test, slots_are_drilled_in_their_order_or_named_where_skipped) {
                         " --setup-sheet " + q(t / "s.html"));
   ASSERT_EQ(s.code, 0) << s.err;
   EXPECT_EQ(s.err, "") << "quiet";
-  EXPECT_THAT(slurp(t / "s.nc"), ::testing::HasSubstr("(NOT DRILLED: LINE 7: SLOT 1.000 MM WIDE FROM X0.000 Y0.000 TO X2.000 Y0.000 MM, --SLOTS SKIP)"));
+  EXPECT_THAT(slurp(t / "s.nc"), ::testing::HasSubstr("(NOT DRILLED: LINE 7: SLOT 1.000 MM WIDE FROM X0.000 Y0.000 TO X2.000 Y0.000)\n(MM, --SLOTS SKIP)"));
   EXPECT_EQ(gcode::interpret(slurp(t / "s.nc")).holes.size(), 3u);
   auto report = nlohmann::json::parse(slurp(t / "r.json"));
   ASSERT_EQ(report["not_drilled"].size(), 1u);
@@ -506,4 +508,154 @@ TEST(cli_test, plan_on_a_drawing_of_round_contours_only_says_how_to_read_them) {
   EXPECT_THAT(testutil::slurp(t / "r.json"), ::testing::HasSubstr("\"read_as_holes\": 4"));
   auto v = testutil::acodrill_run("verify " + (t / "a.nc") + " --holes " + testutil::shell_quote(in) + " --round-contours -q");
   EXPECT_EQ(v.code, 0) << v.out;
+}
+
+// Issue 73: what the operator reads at the machine. Over every dialect and
+// option mix: no line over 78 characters (GRBL's 80-character buffer; senders
+// cut or refuse longer ones: UGS 70 after comments and blanks), no word of a
+// message or comment cut (the whole instruction reads back from the comment
+// lines joined), every pause with its instruction on the pause line itself,
+// no M6, %msg or %wait in a GRBL program, and no pause in the first 10 lines
+// (gSender drops one there).
+namespace {
+
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> out;
+  std::istringstream in(text);
+  for (std::string l; std::getline(in, l);) out.push_back(l);
+  return out;
+}
+
+// The words of every comment, in order, joined by single blanks ("(A B)\n(C)" -> "A B C").
+std::string comment_words(const std::vector<std::string>& lines, bool marlin) {
+  std::string words;
+  for (const std::string& l : lines) {
+    std::string text;
+    if (marlin && l.rfind("; ", 0) == 0) text = l.substr(2);
+    else if (marlin && l.rfind("M0 ", 0) == 0) text = l.substr(3);
+    else if (!marlin && l.find('(') != std::string::npos) text = l.substr(l.find('(') + 1, l.rfind(')') - l.find('(') - 1);
+    if (text.rfind("MSG, ", 0) == 0) text = text.substr(5);
+    if (!text.empty()) words += (words.empty() ? "" : " ") + text;
+  }
+  return words;
+}
+
+}  // namespace
+
+TEST(cli_test, the_operator_reads_every_message_whole_on_lines_every_sender_takes) {
+  testutil::TempDir t;
+  // A board: small holes, a large one (milled with the end mill), 1.3 mm holes for a long-named tool.
+  std::string csv = "x,y,d\n";
+  for (int i = 0; i < 8; ++i) csv += std::to_string(5 + 7 * i) + "," + std::to_string(5 + (i % 3) * 6) + ",0.6\n";
+  for (int i = 0; i < 4; ++i) csv += std::to_string(10 + 9 * i) + ",30,0.8\n";
+  csv += "60,30,3.2\n60,5,1.3\n20,40,1.3\n";
+  spit(t / "board.csv", csv);
+  const std::string long_name = "CARBIDE MICRO DRILL 1.3 MM FROM THE BLUE BOX ON THE SECOND SHELF, REGRIND NUMBER FOUR";
+  spit(t / "tools.json", "{\"tools\": [{\"number\": 1, \"diameter_mm\": 0.6}, {\"number\": 2, \"diameter_mm\": 0.8}, "
+                         "{\"number\": 3, \"diameter_mm\": 1.3, \"name\": \"" + long_name + "\"}, {\"number\": 4, \"diameter_mm\": 3.2}]}");
+  struct Mix {
+    std::string dialects, options;
+  };
+  const std::vector<Mix> mixes = {
+      {"haas fanuc linuxcnc grbl marlin", ""},
+      {"haas fanuc linuxcnc grbl marlin", "--tools " + (t / "tools.json")},
+      {"linuxcnc grbl marlin", "--machine router --drills 0.6,0.8,1.3 --end-mill 1.0 --probe-plate 0.5"},
+      {"grbl marlin", "--machine router --drills 0.6,0.8,1.3 --end-mill 1.0 --side back --alignment-pins 3.0"},
+      {"haas grbl marlin", "--panel 2x2 --pitch 80,60"},
+      {"grbl marlin", "--machine router --tools " + (t / "tools.json") + " --probe-plate 1.5"},
+  };
+  int programs = 0;
+  for (const Mix& mix : mixes) {
+    std::istringstream ds(mix.dialects);
+    for (std::string dialect; ds >> dialect;) {
+      const std::string what = dialect + " " + mix.options;
+      auto r = testutil::acodrill_run("plan " + (t / "board.csv") + " -o " + (t / "p.nc") + " -q --iterations 5 --dialect " +
+                                      dialect + " " + mix.options);
+      ASSERT_EQ(r.code, 0) << what << "\n" << r.err;
+      ++programs;
+      const std::string text = slurp(t / "p.nc");
+      const std::vector<std::string> lines = lines_of(text);
+      const bool marlin = dialect == "marlin", grbl = dialect == "grbl";
+      for (std::size_t i = 0; i < lines.size(); ++i) {
+        const std::string& l = lines[i];
+        EXPECT_LE(l.size(), 78u) << what << ": line " << i + 1 << ": " << l;
+        if (grbl) {
+          std::string code = std::regex_replace(l, std::regex(R"(\([^)]*\))"), "");
+          code.erase(std::remove(code.begin(), code.end(), ' '), code.end());
+          EXPECT_LE(code.size(), 70u) << what << ": " << l;
+          EXPECT_EQ(l.find("M6"), std::string::npos) << what << ": " << l;
+          EXPECT_EQ(l.find("%msg"), std::string::npos) << what << ": " << l;
+          EXPECT_EQ(l.find("%wait"), std::string::npos) << what << ": " << l;
+        }
+        const bool pause = l == "M0" || l == "M00" || l.rfind("M0 ", 0) == 0 || l.rfind("M00 ", 0) == 0;
+        if (!pause) continue;
+        EXPECT_GE(i, 10u) << what << ": a pause within the first 10 lines";
+        if (marlin) EXPECT_THAT(l, ::testing::MatchesRegex("M0 [A-Z0-9].*")) << what;
+        else EXPECT_THAT(l, ::testing::MatchesRegex("M0+ \\([A-Z0-9][^()]*\\)")) << what;
+      }
+      // Whole words: every instruction reads back from the comments joined.
+      const std::string words = comment_words(lines, marlin);
+      if (grbl || marlin) {
+        EXPECT_THAT(words, ::testing::HasSubstr("AT EACH TOOL THE SPINDLE STOPS AND RISES AND THE PROGRAM PAUSES: PUT IN "
+                                                "THE TOOL NAMED BELOW,"))
+            << what;
+        EXPECT_THAT(words, ::testing::ContainsRegex("PUT IN T1 [0-9.]+ MM DRILL, (ZERO Z ON THE PART TOP|TOUCH PLATE ON THE PART "
+                                                    "UNDER IT, CLIP ON), RESUME"))
+            << what;
+        if (mix.options.find("probe-plate") != std::string::npos) {
+          EXPECT_THAT(words, ::testing::HasSubstr("TAKE THE CLIP AND THE PLATE AWAY, RESUME.")) << what;
+          EXPECT_THAT(words, ::testing::HasSubstr("TAKE THE PROBE CLIP AND THE TOUCH PLATE AWAY, RESUME")) << what;
+        }
+      }
+      if (mix.options.find("tools.json") != std::string::npos) {
+        EXPECT_THAT(words, ::testing::HasSubstr(long_name)) << what << ": the long name whole";
+      }
+    }
+  }
+  EXPECT_EQ(programs, 20);
+}
+
+// Issue 73: the setup sheet and the report name how the program makes each
+// tool's holes in its dialect: a GRBL program has no G81.
+TEST(cli_test, the_setup_sheet_and_report_name_the_cycle_the_program_really_runs) {
+  testutil::TempDir t;
+  spit(t / "a.csv", "x,y,d\n0,0,0.8\n10,0,0.8\n20,5,3.2\n");
+  for (const std::string dialect : {"grbl", "marlin", "haas"}) {
+    auto r = testutil::acodrill_run("plan " + (t / "a.csv") + " -o " + (t / "a.nc") + " -q --iterations 5 --machine router --dialect " +
+                                    dialect + " --drills 0.8 --end-mill 1.0 --setup-sheet " + (t / "s.html") + " --report " +
+                                    (t / "r.json"));
+    if (dialect == "haas") {
+      r = testutil::acodrill_run("plan " + (t / "a.csv") + " -o " + (t / "a.nc") + " -q --iterations 5 --setup-sheet " +
+                                 (t / "s.html") + " --report " + (t / "r.json"));
+    }
+    ASSERT_EQ(r.code, 0) << r.err;
+    const std::string program = slurp(t / "a.nc"), sheet = slurp(t / "s.html");
+    const auto report = nlohmann::json::parse(slurp(t / "r.json"));
+    for (const auto& tool : report["tools"]) {
+      const std::string cycle = tool["cycle"];
+      if (dialect == "haas") {
+        EXPECT_THAT(cycle, ::testing::MatchesRegex("G8[123]|G73"));
+        EXPECT_THAT(program, ::testing::HasSubstr(cycle + " X"));
+        continue;
+      }
+      EXPECT_NE(cycle, "G81") << "a bare G81 the program does not contain";
+      EXPECT_THAT(cycle, ::testing::StartsWith("G")) << cycle;
+      EXPECT_THAT(program, ::testing::Not(::testing::HasSubstr("G81"))) << dialect;
+      EXPECT_THAT(sheet, ::testing::HasSubstr(cycle)) << dialect;
+      if (tool["kind"] == "end_mill") EXPECT_EQ(cycle, "G2 helix");
+      else EXPECT_THAT(cycle, ::testing::StartsWith("G1 ")) << "drilled with G1 down, G0 out";
+    }
+  }
+}
+
+// Issue 73: the README says the filter is in build/bin after scripts/demo; the demo builds it.
+TEST(cli_test, scripts_demo_builds_every_program_the_readme_places_in_build_bin) {
+  const std::string demo = slurp(testutil::source_dir() + "/scripts/demo");
+  const std::string readme = slurp(testutil::source_dir() + "/README.md");
+  std::smatch targets;
+  ASSERT_TRUE(std::regex_search(demo, targets, std::regex("BUILD_TARGETS=\"([^\"]*)\"")));
+  ASSERT_THAT(readme, ::testing::HasSubstr("`acodrill-linuxcnc-filter` (built beside `acodrill` in `build/bin`"));
+  for (const std::string program : {"acodrill", "acobench", "acodrill-linuxcnc-filter"}) {
+    EXPECT_THAT(" " + targets[1].str() + " ", ::testing::HasSubstr(" " + program + " ")) << program;
+  }
 }

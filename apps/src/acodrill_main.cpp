@@ -645,6 +645,7 @@ int plan_program(const PlanArgs& a, planning::PlanOptions o, const app::LoadedHo
   app::ReportContext ctx{source, a.output, placement, loaded.name, &loaded, {}, 1, 1, std::nullopt};
   ctx.program_input = app::ReportContext::ProgramInput{r.plan.groups.size(), r.overlapping_holes, r.overlap_groups,
                                                        a.keep_style ? "keep" : "dialect"};
+  ctx.dialect = o.program.dialect;
   return finish_plan(a, program_text, r.holes, r.plan, o, ctx, planning::to_passes(r.holes, r.plan, o.machine));
 }
 
@@ -809,7 +810,8 @@ int cmd_plan(const PlanArgs& a, const SolverArgs& s, const InputArgs& in_args) {
           gcode::format_number(plan.optimized.travel_mm, 1) + " MM",
       "ORDER: ACODRILL " + std::string(aco::to_string(plan.solver.algorithm)) + " SEED " +
           std::to_string(plan.solver.seed),
-      planning::origin_comment(placement, ps.units),
+      planning::origin_comment(placement),
+      planning::extent_comment(placement, ps.units),
       planning::zero_comment(placement)};
   ps.header_comments.insert(ps.header_comments.end(), side_notes.begin(), side_notes.end());
   // Which drill makes which designed diameter, and by how much it differs.
@@ -851,6 +853,7 @@ int cmd_plan(const PlanArgs& a, const SolverArgs& s, const InputArgs& in_args) {
   for (const app::Job::Source& src : job.sources) ctx.sources.push_back({src.file, src.holes});
   ctx.panel_copies = copies;
   ctx.batch = a.batch;
+  ctx.dialect = o.program.dialect;
   return finish_plan(a, program_text, loaded.holes, plan, o, ctx, passes, &job);
 }
 

@@ -23,7 +23,7 @@ std::string report_json(const aco::HoleSet& holes, const PlanResult& plan, const
     t["tool"] = g.tool.number;
     t["diameter_mm"] = round6(g.tool.diameter_mm);
     t["holes"] = g.optimized.size();
-    t["cycle"] = g.tool.end_mill ? "helix" : gcode::to_string(g.tool.cycle);
+    t["cycle"] = gcode::cycle_description(g.tool, ctx.dialect);
     t["kind"] = g.tool.end_mill ? "end_mill" : "drill";
     t["spindle_rpm"] = g.tool.spindle_rpm;
     t["feed_mm_min"] = round6(g.tool.feed_mm_min);

@@ -99,7 +99,7 @@ std::string setup_sheet_html(const aco::HoleSet& holes, const PlanResult& plan, 
     const bool pecks = t.cycle == gcode::Cycle::G83 || t.cycle == gcode::Cycle::G73;
     const double tool_time = g < plan.optimized.tool_time_s.size() ? plan.optimized.tool_time_s[g] : 0.0;
     h << "<tr><td>T" << t.number << "</td><td>" << esc(gcode::tool_name(t)) << "</td><td class=\"n\">" << len(t.diameter_mm)
-      << "</td><td>" << (t.end_mill ? "helix, " + len(t.helix_pitch_mm) + " a turn" : std::string(gcode::to_string(t.cycle)))
+      << "</td><td>" << esc(gcode::cycle_description(t, ps.dialect)) << (t.end_mill ? ", " + len(t.helix_pitch_mm) + " a turn" : std::string())
       << "</td><td class=\"n\">" << len(t.depth_mm) << "</td><td class=\"n\">"
       << (pecks ? len(t.peck_mm) : std::string("&#8211;")) << "</td><td class=\"n\">"
       << (t.cycle == gcode::Cycle::G82 ? gcode::format_number(t.dwell_s, 2) : std::string("&#8211;"))

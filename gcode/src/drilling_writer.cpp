@@ -156,8 +156,16 @@ void write_dialect(std::ostream& out, const DrillingProgram& p, const DrillingWr
   w.line("%");
   char oline[16];
   std::snprintf(oline, sizeof oline, "O%05d", s.program_number);
-  w.line(std::string(oline) + " (" + comment_text(s.program_name) + ")");
-  for (const std::string& text : s.header_comments) w.line("(" + comment_text(text) + ")");
+  const std::string named = std::string(oline) + " (" + comment_text(s.program_name) + ")";
+  if (named.size() <= kMaxLineChars) {
+    w.line(named);
+  } else {
+    w.line(oline);
+    for (const std::string& l : comment_lines(s.program_name)) w.line(l);
+  }
+  for (const std::string& text : s.header_comments) {
+    for (const std::string& l : comment_lines(text)) w.line(l);
+  }
   for (const ToolRun& run : p.runs) {
     if (run.tool <= 0) continue;
     std::string d = run.diameter_mm ? " D=" + w.n(*run.diameter_mm) + (s.inch ? " IN" : " MM") : "";
@@ -168,8 +176,11 @@ void write_dialect(std::ostream& out, const DrillingProgram& p, const DrillingWr
   w.line(w.z_home());
   for (const ToolRun& run : p.runs) {
     if (run.holes.empty()) continue;
-    w.line("(" + (run.tool > 0 ? "T" + std::to_string(run.tool) + ", " : std::string("NO TOOL NUMBER, ")) +
-           std::to_string(run.holes.size()) + " HOLES" + (run.message.empty() ? "" : ": " + comment_text(run.message)) + ")");
+    for (const std::string& l : comment_lines((run.tool > 0 ? "T" + std::to_string(run.tool) + ", " : std::string("NO TOOL NUMBER, ")) +
+                                               std::to_string(run.holes.size()) + " HOLES" +
+                                               (run.message.empty() ? "" : ": " + run.message))) {
+      w.line(l);
+    }
     if (run.tool > 0) w.line("T" + std::to_string(run.tool) + (run.tool_change ? " M06" : ""));
     if (run.pause) w.line("M00");
     const ProgramHole& first = run.holes.front();
@@ -214,10 +225,8 @@ void write_hobby(std::ostream& out, const DrillingProgram& p, const DrillingWrit
     w.comment((run.tool > 0 ? "T" + std::to_string(run.tool) + ", " : std::string("NO TOOL NUMBER, ")) +
               std::to_string(run.holes.size()) + " HOLES" + (run.message.empty() ? "" : ": " + run.message));
     if (!tool_in || *tool_in != run.tool || run.pause) {
-      const std::string drill = run.tool > 0 ? "T" + std::to_string(run.tool) : std::string("THE DRILL");
-      w.pause_for("PUT IN " + drill + (run.diameter_mm ? " " + w.size(*run.diameter_mm) + " DRILL" : "") +
-                      ", ZERO Z ON THE PART TOP, RESUME",
-                  clear_z);
+      w.pause_for_tool(run.tool, run.diameter_mm ? w.size(*run.diameter_mm) + " DRILL" : std::string(), run.diameter_mm, false,
+                       false, clear_z);
       tool_in = run.tool;
     }
     w.select_tool(run.tool);

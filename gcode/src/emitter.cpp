@@ -32,6 +32,21 @@ class Writer {
 
   void line(const std::string& text) { out_ << text << '\n'; }
 
+  // "(TEXT)", wrapped between words into lines that fit.
+  void comment(const std::string& text) {
+    for (const std::string& l : comment_lines(text)) line(l);
+  }
+  // "CODE (TEXT)" where it fits; else the text's comment lines, then the code alone.
+  void with_comment(const std::string& code, const std::string& text) {
+    const std::string one = code + " (" + comment_text(text) + ")";
+    if (one.size() <= kMaxLineChars) {
+      line(one);
+      return;
+    }
+    comment(text);
+    line(code);
+  }
+
   std::string z_home() const { return z_home_block(s_.dialect); }
 
   std::string dwell(double seconds) const {
@@ -82,14 +97,15 @@ class Writer {
   // P0: the active work offset), up 5 mm over the plate, a pause to take the
   // clip off.
   void probe_plate(const Tool& t, double plate_mm) {
+    // LinuxCNC shows (MSG, ...); the instruction stands on the M00 line too, for what shows only that.
     line("(MSG, TOUCH PLATE ON THE PART UNDER T" + std::to_string(t.number) + ", CLIP ON, RESUME)");
-    line("M00");
+    line("M00 (PLATE UNDER T" + std::to_string(t.number) + ", CLIP ON)");
     line("G91 G38.2 Z-" + c(s_.probe_travel_mm) + " F" + f(s_.probe_feed_mm_min));
     line("G90");
     line("G10 L20 P0 Z" + c(plate_mm));
     line("G00 Z" + c(plate_mm + 5.0));
     line("(MSG, TAKE THE PROBE CLIP AND THE TOUCH PLATE AWAY, RESUME)");
-    line("M00");
+    line("M00 (CLIP AND PLATE AWAY)");
   }
 
  private:
@@ -107,13 +123,51 @@ std::string comment_text(std::string text) {
     else if (static_cast<unsigned char>(ch) >= 128) ch = '?';
     else ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
   }
-  if (text.size() > 100) text.resize(100);
   return text;
+}
+
+std::vector<std::string> comment_lines(const std::string& text) {
+  std::vector<std::string> lines = wrap_words(comment_text(text), kMaxLineChars - 2);
+  for (std::string& l : lines) l = "(" + l + ")";
+  return lines;
+}
+
+std::vector<std::string> wrap_words(const std::string& text, std::size_t width) {
+  std::vector<std::string> lines;
+  std::string current;
+  std::size_t i = 0;
+  while (i < text.size()) {
+    while (i < text.size() && text[i] == ' ') ++i;
+    std::size_t j = i;
+    while (j < text.size() && text[j] != ' ') ++j;
+    if (j == i) break;
+    const std::string word = text.substr(i, j - i);
+    if (!current.empty() && current.size() + 1 + word.size() > width) {
+      lines.push_back(current);
+      current.clear();
+    }
+    current += (current.empty() ? "" : " ") + word;
+    i = j;
+  }
+  if (!current.empty() || lines.empty()) lines.push_back(current);
+  return lines;
 }
 
 std::string z_home_block(Dialect d) {
   if (d == Dialect::Fanuc) return "G91 G28 Z0.\nG90";  // HAAS and LinuxCNC: G53, non-modal machine Z
   return "G53 G00 Z0.";
+}
+
+std::string cycle_description(const Tool& t, Dialect d) {
+  if (t.end_mill) return has_canned_cycles(d) ? "G02 helix" : "G2 helix";
+  if (has_canned_cycles(d)) return to_string(t.cycle);
+  switch (t.cycle) {
+    case Cycle::G82: return "G1 down, G4 dwell, G0 out (as G82)";
+    case Cycle::G83: return "G1 pecks, G0 out after each (as G83)";
+    case Cycle::G73: return "G1 pecks, G0 back-off (as G73)";
+    case Cycle::G81: break;
+  }
+  return "G1 down, G0 out (as G81)";
 }
 
 std::string tool_name(const Tool& t) {
@@ -209,8 +263,7 @@ void write_hobby_program(std::ostream& out, const std::vector<ToolPass>& passes,
   const bool milled = std::any_of(passes.begin(), passes.end(), [](const ToolPass& p) { return p.tool.end_mill; });
   if (milled && s.dialect == Dialect::Marlin) w.comment("MILLED HOLES ARE G2 ARCS: MARLIN NEEDS ARC_SUPPORT");
   if (s.probe_plate_mm && s.dialect == Dialect::Marlin) w.comment("TOUCH PLATE PROBING IS G38.2: MARLIN NEEDS G38_PROBE_TARGET");
-  w.comment(s.probe_plate_mm ? "EACH TOOL: A PAUSE TO PUT IT IN, Z PROBED ON THE TOUCH PLATE, A PAUSE TO TAKE THE CLIP OFF"
-                             : "EACH TOOL: A PAUSE TO PUT IN ITS DRILL AND ZERO Z ON THE PART TOP");
+  w.tool_change_sequence(s.probe_plate_mm.has_value());
   w.start();
   w.rapid_z(s.initial_z_mm);
   for (const ToolPass& p : passes) {
@@ -218,15 +271,9 @@ void write_hobby_program(std::ostream& out, const std::vector<ToolPass>& passes,
     if (first == p.holes.size()) continue;
     const Tool& t = p.tool;
     w.comment("T" + std::to_string(t.number) + " " + tool_name(t) + ", " + std::to_string(p.holes.size() - first) + " HOLES");
-    const std::string put_in = "PUT IN T" + std::to_string(t.number) + " " + tool_name(t);
-    if (s.probe_plate_mm) {
-      w.pause_for(put_in + ", TOUCH PLATE ON THE PART UNDER IT, CLIP ON, RESUME", s.initial_z_mm);
-      w.select_tool(t.number);
-      w.probe_plate(*s.probe_plate_mm, s.probe_feed_mm_min, s.probe_travel_mm);
-    } else {
-      w.pause_for(put_in + ", ZERO Z ON THE PART TOP, RESUME", s.initial_z_mm);
-      w.select_tool(t.number);
-    }
+    w.pause_for_tool(t.number, tool_name(t), t.diameter_mm, t.end_mill, s.probe_plate_mm.has_value(), s.initial_z_mm);
+    w.select_tool(t.number);
+    if (s.probe_plate_mm) w.probe_plate(*s.probe_plate_mm, s.probe_feed_mm_min, s.probe_travel_mm);
     w.spindle_on(3, t.spindle_rpm, s.spindle_start_s);
     if (t.end_mill) {
       for (std::size_t i = first; i < p.holes.size();) {
@@ -281,13 +328,13 @@ void write_program(std::ostream& out, const std::vector<ToolPass>& passes, const
   w.line("%");
   char oline[16];
   std::snprintf(oline, sizeof oline, "O%05d", s.program_number);
-  w.line(std::string(oline) + " (" + comment_text(s.program_name) + ")");
-  for (const std::string& text : s.header_comments) w.line("(" + comment_text(text) + ")");
+  w.with_comment(oline, s.program_name);
+  for (const std::string& text : s.header_comments) w.comment(text);
   if (s.resume_from > 1) w.line("(RESUMED AT HOLE " + std::to_string(s.resume_from) + ")");
   for (const ToolPass& p : passes) {
-    w.line("(T" + std::to_string(p.tool.number) + " D=" + w.c(p.tool.diameter_mm) + " " +
-           (s.units == Units::Inch ? "IN" : "MM") + " - " + comment_text(tool_name(p.tool)) + " - " +
-           std::to_string(p.holes.size()) + " HOLES)");
+    w.comment("T" + std::to_string(p.tool.number) + " D=" + w.c(p.tool.diameter_mm) + " " +
+              (s.units == Units::Inch ? "IN" : "MM") + " - " + tool_name(p.tool) + " - " + std::to_string(p.holes.size()) +
+              " HOLES");
   }
   w.line("G00 G17 G40 G49 G80 G90");
   w.line(s.units == Units::Inch ? "G20" : "G21");
@@ -298,9 +345,8 @@ void write_program(std::ostream& out, const std::vector<ToolPass>& passes, const
     if (first == p.holes.size()) continue;
     const Tool& t = p.tool;
     const std::size_t count = p.holes.size() - first;
-    w.line("(T" + std::to_string(t.number) + " " + comment_text(tool_name(t)) + ", " + std::to_string(count) +
-           " HOLES)");
-    w.line("T" + std::to_string(t.number) + " M06 (" + comment_text(tool_name(t)) + ")");
+    w.comment("T" + std::to_string(t.number) + " " + tool_name(t) + ", " + std::to_string(count) + " HOLES");
+    w.with_comment("T" + std::to_string(t.number) + " M06", tool_name(t));
     if (s.probe_plate_mm) w.probe_plate(t, *s.probe_plate_mm);
     const aco::Point2 h0 = t.end_mill ? milled_stop(p, first, s).start : p.holes[first];
     w.line("G00 G90 G54 X" + w.c(h0.x) + " Y" + w.c(h0.y) + " S" + std::to_string(t.spindle_rpm) + " M03");

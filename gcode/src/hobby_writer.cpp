@@ -9,10 +9,15 @@ namespace gcode {
 namespace {
 
 constexpr double kMmPerInch = 25.4;
-// GRBL's line buffer holds 80 characters (protocol.h, LINE_BUFFER_SIZE);
-// comments do not count there, but some senders cut long lines: keep every
-// line under it.
-constexpr std::size_t kMaxLine = 78;
+constexpr std::size_t kMaxLine = kMaxLineChars;
+
+// "0.6", "1", "0.0236": a size as short as it is exact to the program's digits.
+std::string short_number(double v, int decimals) {
+  std::string s = format_number(v, decimals);
+  while (!s.empty() && s.back() == '0') s.pop_back();
+  if (!s.empty() && s.back() == '.') s.pop_back();
+  return s;
+}
 
 std::string rpm_text(double rpm) {
   const std::string s = format_number(std::round(rpm), 0);
@@ -40,9 +45,35 @@ std::string HobbyWriter::plain(const std::string& text) const {
 }
 
 void HobbyWriter::comment(const std::string& text) {
-  const std::string t = plain(text);
-  if (dialect_ == Dialect::Marlin) line(("; " + t).substr(0, kMaxLine));
-  else line("(" + t.substr(0, kMaxLine - 2) + ")");
+  for (const std::string& piece : wrap_words(plain(text), kMaxLine - 2)) {
+    if (dialect_ == Dialect::Marlin) line("; " + piece);
+    else line("(" + piece + ")");
+  }
+}
+
+void HobbyWriter::tool_change_sequence(bool touch_plate) {
+  comment(touch_plate ? "AT EACH TOOL THE SPINDLE STOPS AND RISES AND THE PROGRAM PAUSES: PUT IN THE TOOL NAMED BELOW, LAY "
+                        "THE TOUCH PLATE ON THE PART UNDER IT, CLIP THE PROBE ON, RESUME. Z IS PROBED ON THE PLATE, THEN "
+                        "A SECOND PAUSE: TAKE THE CLIP AND THE PLATE AWAY, RESUME."
+                      : "AT EACH TOOL THE SPINDLE STOPS AND RISES AND THE PROGRAM PAUSES: PUT IN THE TOOL NAMED BELOW, "
+                        "ZERO Z ON THE PART TOP, RESUME.");
+}
+
+void HobbyWriter::pause_for_tool(int number, const std::string& name, std::optional<double> diameter_mm, bool end_mill,
+                                 bool touch_plate, double clear_z_mm) {
+  const std::string t = number > 0 ? "T" + std::to_string(number) : std::string("THE DRILL");
+  const std::string put_in = "PUT IN " + t + (name.empty() ? std::string() : " " + name);
+  // The short form names the tool by its size, whatever a tool table called it.
+  std::string shortly = "PUT IN " + t;
+  if (diameter_mm) {
+    shortly += " " + short_number(inch_ ? *diameter_mm / kMmPerInch : *diameter_mm, inch_ ? 4 : 3) + (inch_ ? " IN" : " MM") +
+               (end_mill ? " END MILL" : " DRILL");
+  }
+  if (touch_plate) {
+    pause_for(put_in + ", TOUCH PLATE ON THE PART UNDER IT, CLIP ON, RESUME", shortly + ", PLATE AND CLIP ON", clear_z_mm);
+  } else {
+    pause_for(put_in + ", ZERO Z ON THE PART TOP, RESUME", shortly + ", ZERO Z", clear_z_mm);
+  }
 }
 
 void HobbyWriter::header(const std::string& program_name, const std::vector<std::string>& comments) {
@@ -67,21 +98,30 @@ void HobbyWriter::work_offset(int g) {
   if (g != 54) line("G" + std::to_string(g));
 }
 
-void HobbyWriter::pause_for(const std::string& message, double clear_z_mm) {
+void HobbyWriter::pause_for(const std::string& message, const std::string& short_message, double clear_z_mm) {
   spindle_off();
   coolant_off();
   rapid_z(clear_z_mm);
-  message_pause(message);
+  message_pause(message, short_message);
 }
 
-void HobbyWriter::message_pause(const std::string& message) {
-  const std::string t = plain(message);
+void HobbyWriter::message_pause(const std::string& message, const std::string& short_message) {
+  // The short message fits on the pause line; should it not, its words go on
+  // lines of their own before a plain pause rather than being cut.
+  const std::string brief = plain(short_message);
   if (dialect_ == Dialect::Marlin) {
-    line(("M0 " + t).substr(0, kMaxLine));
-  } else {
-    line("(MSG, " + t.substr(0, kMaxLine - 7) + ")");
-    line("M0");
+    comment(message);
+    if (3 + brief.size() <= kMaxLine) {
+      line("M0 " + brief);
+    } else {
+      comment(brief);
+      line("M0");
+    }
+    return;
   }
+  for (const std::string& piece : wrap_words(plain(message), kMaxLine - 7)) line("(MSG, " + piece + ")");
+  if (5 + brief.size() <= kMaxLine) line("M0 (" + brief + ")");
+  else line("M0");
 }
 
 void HobbyWriter::select_tool(int tool) {
@@ -197,7 +237,7 @@ void HobbyWriter::probe_plate(double plate_mm, double feed_mm_min, double travel
   else line("G10 L20 P0 Z" + n(plate_mm));
   z_ = plate_mm;
   rapid_z(plate_mm + 5.0);
-  message_pause("TAKE THE PROBE CLIP AND THE TOUCH PLATE AWAY, RESUME");
+  message_pause("TAKE THE PROBE CLIP AND THE TOUCH PLATE AWAY, RESUME", "CLIP AND PLATE AWAY, RESUME");
 }
 
 void HobbyWriter::end(double clear_z_mm, std::optional<aco::Point2> home) {

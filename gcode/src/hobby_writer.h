@@ -38,9 +38,18 @@ class HobbyWriter {
   std::string size(double mm) const;
   void start();                                 // units, absolute, plane
   void work_offset(int g);                      // G54..G59 (G54 is the default: not written)
-  // Spindle off, up to `clear_z`, the message, the pause (M0). GRBL senders
-  // show "(MSG, ...)" before the M0; Marlin shows "M0 text" on its screen.
-  void pause_for(const std::string& message, double clear_z_mm);
+  // Spindle off, up to `clear_z`, the message, the pause: the whole
+  // instruction in "(MSG, ...)" lines (grblHAL and LinuxCNC show them;
+  // Marlin: "; " comments), then the short one on the pause line itself
+  // ("M0 (PUT IN T1 0.6 MM DRILL, ZERO Z)"; Marlin "M0 PUT IN ..."), which
+  // is what most senders show at the pause (CNCjs, gSender, Candle,
+  // OpenBuilds CONTROL); never a word cut.
+  void pause_for(const std::string& message, const std::string& short_message, double clear_z_mm);
+  // The tool change pause for tool `number` (its name, diameter, kind), with or without a touch plate.
+  void pause_for_tool(int number, const std::string& name, std::optional<double> diameter_mm, bool end_mill,
+                      bool touch_plate, double clear_z_mm);
+  // The header's account of every tool change, for senders that show no message at all.
+  void tool_change_sequence(bool touch_plate);
   void select_tool(int tool);                   // GRBL: T<n>; Marlin: none
   void spindle_on(int direction, double rpm, double start_s);  // M3/M4 S, then a dwell while it comes to speed
   void spindle_off();
@@ -68,7 +77,7 @@ class HobbyWriter {
   std::string f(double mm_min) const;
   void line(const std::string& text);
   void dwell(double seconds);
-  void message_pause(const std::string& message);  // the message as the control shows it, then M0
+  void message_pause(const std::string& message, const std::string& short_message);
 
   std::ostream& out_;
   Dialect dialect_;

@@ -94,13 +94,14 @@ Placement place_holes(aco::HoleSet& holes, const Origin& origin) {
   return p;
 }
 
-std::string origin_comment(const Placement& p, gcode::Units units) {
+std::string extent_comment(const Placement& p, gcode::Units units) {
   const bool inch = units == gcode::Units::Inch;
   auto c = [&](double mm) { return gcode::format_number(inch ? mm / 25.4 : mm, inch ? 4 : 3); };
   const Extent& e = p.extent;
-  return "ORIGIN: " + describe(p.origin) + "; EXTENT X" + c(e.x_min) + ".." + c(e.x_max) + " Y" + c(e.y_min) + ".." +
-         c(e.y_max) + (inch ? " IN" : " MM");
+  return "EXTENT X" + c(e.x_min) + ".." + c(e.x_max) + " Y" + c(e.y_min) + ".." + c(e.y_max) + (inch ? " IN" : " MM");
 }
+
+std::string origin_comment(const Placement& p) { return "ORIGIN: " + describe(p.origin); }
 
 std::string zero_comment(const Placement& p) {
   // Six decimals: verify moves the input holes by this, and must land within

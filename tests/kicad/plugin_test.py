@@ -358,6 +358,36 @@ class Choices(unittest.TestCase):
         self.assertIn("drilling 2.0 min", text)
 
 
+class StartingAcodrill(unittest.TestCase):
+    """Issue 73: on Windows no console window flashes over KiCad, and the
+    output is read as UTF-8 whatever the system's code page."""
+
+    def test_acodrill_starts_without_a_console_window_and_its_output_is_read_as_utf8(self):
+        seen = []
+
+        def fake_run(command, **kwargs):
+            seen.append(kwargs)
+            return subprocess.CompletedProcess(command, 0, "", "")
+
+        real_run, real_name = job.subprocess.run, job.os.name
+        try:
+            job.subprocess.run = fake_run
+            job.os.name = "nt"
+            job._run(["acodrill", "machines"])
+        finally:
+            job.subprocess.run, job.os.name = real_run, real_name
+        self.assertEqual(seen[0].get("creationflags"), 0x08000000)  # CREATE_NO_WINDOW
+        self.assertEqual(seen[0].get("encoding"), "utf-8")
+        # And for real: a name outside any ANSI code page comes back whole.
+        with tempfile.TemporaryDirectory() as t:
+            path = os.path.join(t, "基板_Łódź.csv")
+            with open(path, "w", encoding="utf-8") as f:
+                f.write("x,y,d\n0,0,1\n10,0,1\n")
+            done = job.run_acodrill(ACODRILL, ["plan", path, "-o", os.path.join(t, "a.nc")])
+            self.assertEqual(done.returncode, 0, done.stderr)
+            self.assertIn("基板_Łódź.csv", done.stderr)
+
+
 class Package(unittest.TestCase):
     def test_pcm_package_is_valid_and_loads_as_kicad_installs_it(self):
         import jsonschema

@@ -29,6 +29,7 @@ struct ReportContext {
     std::string style;                                      // "dialect" or "keep"
   };
   std::optional<ProgramInput> program_input;
+  gcode::Dialect dialect = gcode::Dialect::Haas;  // the program's: how its tools' holes are made (the "cycle")
 };
 
 std::string report_json(const aco::HoleSet& holes, const planning::PlanResult& plan, const ReportContext& context);

@@ -113,9 +113,28 @@ std::optional<Cycle> cycle_from_string(const std::string& name);
 // The tool's name, or "6.350 MM DRILL" ("1.000 MM END MILL") made from its diameter.
 std::string tool_name(const Tool& tool);
 
+// How the program this dialect is written in makes the tool's holes, as the
+// operator finds it in the program: "G81", "G83" for a canned-cycle control;
+// "G1 down, G0 out" or "G1 pecks, G0 out between" where there are no canned
+// cycles (GRBL, Marlin); "G2 helix" for an end mill.
+std::string cycle_description(const Tool& tool, Dialect dialect);
+
 // Text made safe for a "(...)" comment: parentheses become '/', one line,
-// uppercase ASCII, at most 100 characters.
+// uppercase ASCII. Never shortened: a long one is wrapped (wrap_words).
 std::string comment_text(std::string text);
+
+// The text in lines of at most `width` characters, broken between words
+// only (a single word longer than the width stands alone on its line).
+std::vector<std::string> wrap_words(const std::string& text, std::size_t width);
+
+// Every line acodrill writes stays within this many characters, comments
+// included: GRBL's line buffer holds 80 (LINE_BUFFER_SIZE), and senders cut
+// or refuse longer lines (Universal G-code Sender: 70 after comments and
+// blanks are stripped).
+constexpr std::size_t kMaxLineChars = 78;
+
+// The text as "(...)" comment lines within kMaxLineChars, words whole.
+std::vector<std::string> comment_lines(const std::string& text);
 
 // The block that takes Z to machine home: "G53 G00 Z0." (HAAS, LinuxCNC) or
 // "G91 G28 Z0." and "G90" (Fanuc).

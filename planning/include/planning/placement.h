@@ -47,8 +47,10 @@ Placement place_holes(aco::HoleSet& holes, const Origin& origin);
 
 // The program header comment that tells the operator where zero is and what
 // the holes span, in program units:
-// "ORIGIN: LOWER-LEFT OF HOLES; EXTENT X0.000..150.000 Y0.000..240.000 MM".
-std::string origin_comment(const Placement& placement, gcode::Units units);
+// "ORIGIN: LOWER-LEFT OF HOLES" and "EXTENT X0.000..150.000 Y0.000..240.000 MM":
+// two header lines, each short enough to stay whole on one line.
+std::string origin_comment(const Placement& placement);
+std::string extent_comment(const Placement& placement, gcode::Units units);
 
 // The program header comment that records program zero in the input's
 // coordinates ("PROGRAM ZERO AT DRAWING X21.100 Y25.500 MM"), and its reader:

@@ -128,9 +128,19 @@ def find_acodrill(acodrill: str) -> str:
     return found
 
 
+def _run(command: Sequence[str]) -> subprocess.CompletedProcess:
+    """acodrill started as the plugin needs it: no input, its output read as
+    the UTF-8 it writes (not the system's ANSI code page), and on Windows
+    without a console window flashing over KiCad at every run."""
+    options = {}
+    if os.name == "nt":
+        options["creationflags"] = getattr(subprocess, "CREATE_NO_WINDOW", 0x08000000)
+    return subprocess.run(list(command), stdin=subprocess.DEVNULL, capture_output=True, text=True, encoding="utf-8",
+                          errors="replace", **options)
+
+
 def run_acodrill(acodrill: str, args: Sequence[str]) -> subprocess.CompletedProcess:
-    return subprocess.run([find_acodrill(acodrill)] + list(args), stdin=subprocess.DEVNULL,
-                          capture_output=True, text=True)
+    return _run([find_acodrill(acodrill)] + list(args))
 
 
 def write_drill_files(drills: Sequence[Drill], folder: str, stem: str) -> List[str]:
@@ -177,8 +187,7 @@ def plan(drills: Sequence[Drill], board_path: str, program: str, options: Sequen
         if own_report:
             report_path = os.path.join(work, "report.json")
             options += ["--report", report_path]
-        done = subprocess.run([binary, "plan"] + inputs + ["-o", program] + options, stdin=subprocess.DEVNULL,
-                              capture_output=True, text=True)
+        done = _run([binary, "plan"] + inputs + ["-o", program] + options)
         stderr = done.stderr
         if own_report:  # the summary's report is ours, not the user's: not named
             stderr = "".join(l for l in stderr.splitlines(True) if l.rstrip("\n") != f"  report: {report_path}")
