@@ -358,6 +358,49 @@ class Choices(unittest.TestCase):
         self.assertIn("drilling 2.0 min", text)
 
 
+@unittest.skipIf(pcbnew is None, "KiCad's pcbnew is not installed")
+class DrillShapes(unittest.TestCase):
+    """Issue 69: a slot is a pad whose drill shape is oblong, not any drill of
+    unequal sizes: a round drill given 1 x 2 mm is drilled round at 1 mm, as
+    KiCad's own drill writer drills it."""
+
+    def test_a_round_drill_of_unequal_sizes_is_drilled_round_at_the_smaller(self):
+        from acodrill_kicad.board import board_drills
+        board = pcbnew.BOARD()
+        fp = pcbnew.FOOTPRINT(board)
+        board.Add(fp)
+        for shape, x in ((pcbnew.PAD_DRILL_SHAPE_CIRCLE, 10), (pcbnew.PAD_DRILL_SHAPE_OBLONG, 20)):
+            pad = pcbnew.PAD(fp)
+            pad.SetAttribute(pcbnew.PAD_ATTRIB_PTH)
+            pad.SetDrillShape(shape)
+            pad.SetDrillSize(pcbnew.wxSize(pcbnew.FromMM(1.0), pcbnew.FromMM(2.0)))
+            pad.SetSize(pcbnew.wxSize(pcbnew.FromMM(2.0), pcbnew.FromMM(3.0)))
+            pad.SetPosition(pcbnew.wxPoint(pcbnew.FromMM(x), pcbnew.FromMM(10)))
+            fp.Add(pad)
+        drills, _ = board_drills(board)
+        by_x = {round(d.x_mm): d for d in drills}
+        self.assertEqual(len(drills), 2)
+        self.assertIsNone(by_x[10].slot_end, "round: no slot")
+        self.assertAlmostEqual(by_x[10].diameter_mm, 1.0)
+        self.assertAlmostEqual(by_x[10].y_mm, -10.0)
+        self.assertIsNotNone(by_x[20].slot_end, "oblong: a slot")
+        self.assertAlmostEqual(by_x[20].diameter_mm, 1.0)
+
+
+class Links(unittest.TestCase):
+    def test_the_setup_sheet_link_is_a_file_url_on_every_platform(self):
+        self.assertEqual(job.file_url("C:\\Users\\Łukasz\\Documents\\a b.html"),
+                         "file:///C:/Users/%C5%81ukasz/Documents/a%20b.html")
+        self.assertEqual(job.file_url("/home/ola/płytka x.html"), "file:///home/ola/p%C5%82ytka%20x.html")
+
+    def test_the_pcm_metadata_admits_kicad_9(self):
+        meta = json.loads(read(os.path.join(PLUGIN_DIR, "metadata.json")))
+        top = meta["versions"][0]["kicad_version_max"]
+        self.assertGreaterEqual(tuple(int(p) for p in top.split(".")), (9, 0))
+        with open(os.path.join(PLUGIN_DIR, "acodrill_kicad", "__main__.py"), encoding="utf-8") as f:
+            self.assertIn("6 to 9", f.read())
+
+
 class StartingAcodrill(unittest.TestCase):
     """Issue 73: on Windows no console window flashes over KiCad, and the
     output is read as UTF-8 whatever the system's code page."""

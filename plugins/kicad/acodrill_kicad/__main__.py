@@ -13,7 +13,7 @@ import sys
 HELP = """usage: /usr/bin/python3 -m acodrill_kicad BOARD.kicad_pcb -o PROGRAM [--acodrill PATH]
                                         [--drill-files DIR] [acodrill plan options ...]
 
-Plans the drilling of a KiCad board (6 to 8) with acodrill: the holes are the
+Plans the drilling of a KiCad board (6 to 9) with acodrill: the holes are the
 board's own pads (plated and non-plated, round and oval) and through vias, read
 by KiCad's pcbnew at their exact positions, written as Excellon drill files
 (BOARD-PTH.drl, BOARD-NPTH.drl) and planned by `acodrill plan` into PROGRAM

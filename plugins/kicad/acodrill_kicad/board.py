@@ -1,5 +1,6 @@
 """The holes of a board as pcbnew lists them: every pad with a drill (plated
-or not, round or oval) and every via. KiCad 6 to 8."""
+or not, round or oval) and every via. KiCad 6 to 9: what differs between
+them is found by feature (the attributes pcbnew has), not by version."""
 import math
 from typing import List, Tuple
 
@@ -20,6 +21,14 @@ def _via_type_through() -> int:
     return getattr(pcbnew, "VIATYPE_THROUGH", 3)
 
 
+def _oblong_drill(pad) -> bool:
+    """The pad's drill is oval (a slot), by its drill shape: a round drill of
+    unequal sizes is drilled round, at the smaller one, as KiCad's own drill
+    writer does. Compared by name: the numbers moved between KiCad 6 and 9."""
+    oblong = getattr(pcbnew, "PAD_DRILL_SHAPE_OBLONG", None)
+    return oblong is not None and pad.GetDrillShape() == oblong
+
+
 def board_drills(board) -> Tuple[List[Drill], List[str]]:
     """The board's drills, in mm with Y up (KiCad's Y negated), and warnings
     for what is not drilled (blind, buried and micro vias)."""
@@ -33,8 +42,8 @@ def board_drills(board) -> Tuple[List[Drill], List[str]]:
             pos = pad.GetPosition()
             x, y = _mm(pos.x), -_mm(pos.y)
             plated = pad.GetAttribute() != pcbnew.PAD_ATTRIB_NPTH
-            if size.x == size.y:
-                drills.append(Drill(x, y, _mm(size.x), plated))
+            if size.x == size.y or not _oblong_drill(pad):
+                drills.append(Drill(x, y, _mm(min(size.x, size.y)), plated))
                 continue
             # An oval drill: a slot as wide as its short side along its long
             # side, turned by the pad's orientation (counter-clockwise as seen

@@ -69,7 +69,7 @@ class DrillDialog(wx.Dialog):
         self.SetSizerAndFit(top)
 
         self.plan_button.Bind(wx.EVT_BUTTON, self.on_plan)
-        self.sheet_button.Bind(wx.EVT_BUTTON, lambda _: wx.LaunchDefaultBrowser("file://" + self.outcome.setup_sheet))
+        self.sheet_button.Bind(wx.EVT_BUTTON, lambda _: wx.LaunchDefaultBrowser(job.file_url(self.outcome.setup_sheet)))
         self.machine.Bind(wx.EVT_CHOICE, self.on_machine)
         self.dialect.Bind(wx.EVT_CHOICE, self.on_machine)
         self.on_machine(None)

@@ -6,6 +6,8 @@ Only the installed `acodrill` plans: this package never orders holes itself.
 """
 import json
 import os
+import pathlib
+import re
 import shutil
 import subprocess
 import tempfile
@@ -51,6 +53,15 @@ class Choices:
     from_back: bool = False          # drill the board from its back (--side back)
     probe_plate_mm: float = 0.0      # a touch plate's thickness (--probe-plate)
     extra: List[str] = field(default_factory=list)  # further `acodrill plan` options
+
+
+def file_url(path: str) -> str:
+    """A file:// URL for a local file on any platform, for the browser to open:
+    "C:\\Users\\Łukasz\\a b.html" -> "file:///C:/Users/%C5%81ukasz/a%20b.html"
+    (a drive letter and backslashes are no URL as they are; letters and blanks escaped)."""
+    if re.match(r"^[A-Za-z]:[\\/]", path) or path.startswith("\\\\"):
+        return pathlib.PureWindowsPath(path).as_uri()
+    return pathlib.Path(os.path.abspath(path)).as_uri()
 
 
 def default_program(board_path: str, dialect: str) -> str:
