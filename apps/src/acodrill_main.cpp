@@ -363,7 +363,7 @@ std::string format_minutes(double seconds) {
 // --panel and --pitch, as plan and verify take them.
 std::vector<planning::PanelCopy> panel_copies(const std::string& panel, const std::string& pitch) {
   if (!pitch.empty() && panel.empty()) throw app::UserError("--pitch goes with --panel COLSxROWS");
-  const bool file = panel.find_first_of("/.") != std::string::npos || std::filesystem::exists(panel);
+  const bool file = panel.find_first_of("/.") != std::string::npos || std::filesystem::exists(app::fs_path(panel));
   if (file && !pitch.empty()) throw app::UserError("--pitch goes with --panel COLSxROWS, not with a panel file");
   return file ? planning::parse_panel(app::read_file(panel), panel) : planning::panel_grid(panel, pitch);
 }
@@ -371,7 +371,7 @@ std::vector<planning::PanelCopy> panel_copies(const std::string& panel, const st
 // --machine: a built-in class by name, unless a file of that name is here, or a profile file.
 planning::Machine load_machine(const std::string& name_or_path) {
   const bool plain = name_or_path.find_first_of("/.") == std::string::npos;
-  if (plain && !std::filesystem::exists(name_or_path)) {
+  if (plain && !std::filesystem::exists(app::fs_path(name_or_path))) {
     if (auto m = planning::builtin_machine(name_or_path)) return *m;
     throw app::UserError("--machine: no machine class \"" + name_or_path + "\" (built in: " +
                          planning::machine_class_names() + "; or give a profile file, see acodrill machines)");
@@ -979,6 +979,13 @@ int main(int argc, char** argv) {
   // Programs and CSV on standard output byte for byte as in a file: LF, not CRLF.
   ::_setmode(::_fileno(stdout), _O_BINARY);
 #endif
+  // Every name as UTF-8, on Windows too (issue 68): the arguments as the system holds them.
+  std::vector<std::string> arguments = app::utf8_arguments(argc, argv);
+  std::vector<char*> utf8_argv;
+  for (std::string& a : arguments) utf8_argv.push_back(a.data());
+  utf8_argv.push_back(nullptr);
+  argc = static_cast<int>(arguments.size());
+  argv = utf8_argv.data();
   CLI::App cli{"acodrill orders the drill holes of a part so the spindle travels as little as possible, "
                "and writes the G-code that drills them.\n\n"
                "Examples:\n"

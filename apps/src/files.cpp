@@ -4,6 +4,7 @@
 #include <sys/stat.h>
 #ifdef _WIN32
 #include <windows.h>
+#include <shellapi.h>
 #include <io.h>
 #include <random>
 #else
@@ -22,16 +23,50 @@
 
 namespace app {
 
+std::filesystem::path fs_path(const std::string& utf8) { return std::filesystem::u8path(utf8); }
+
+std::vector<std::string> utf8_arguments(int argc, char** argv) {
+#ifdef _WIN32
+  int count = 0;
+  LPWSTR* wide = ::CommandLineToArgvW(::GetCommandLineW(), &count);
+  if (wide) {
+    std::vector<std::string> args;
+    for (int i = 0; i < count; ++i) args.push_back(std::filesystem::path(wide[i]).u8string());
+    ::LocalFree(wide);
+    ::SetConsoleOutputCP(CP_UTF8);  // names in messages as the user typed them
+    return args;
+  }
+#endif
+  return std::vector<std::string>(argv, argv + argc);
+}
+
+namespace {
+
+#ifdef _WIN32
+using Stat = struct _stat64;
+int stat_of(const std::string& path, Stat* st) { return ::_wstat64(fs_path(path).c_str(), st); }
+FILE* open_file(const std::string& path, const wchar_t* mode) { return ::_wfopen(fs_path(path).c_str(), mode); }
+int remove_file(const std::string& path) { return ::_wremove(fs_path(path).c_str()); }
+#define ACO_MODE(m) L##m
+#else
+using Stat = struct stat;
+int stat_of(const std::string& path, Stat* st) { return ::stat(path.c_str(), st); }
+FILE* open_file(const std::string& path, const char* mode) { return std::fopen(path.c_str(), mode); }
+#define ACO_MODE(m) m
+#endif
+
+}  // namespace
+
 std::string read_file(const std::string& path) {
   if (path == "-") {
     std::ostringstream ss;
     ss << std::cin.rdbuf();
     return ss.str();
   }
-  struct stat st {};
-  if (::stat(path.c_str(), &st) != 0) throw UserError(path, 0, std::string("cannot read: ") + std::strerror(errno));
+  Stat st {};
+  if (stat_of(path, &st) != 0) throw UserError(path, 0, std::string("cannot read: ") + std::strerror(errno));
   if (S_ISDIR(st.st_mode)) throw UserError(path, 0, "is a directory, not a file");
-  FILE* f = std::fopen(path.c_str(), "rb");
+  FILE* f = open_file(path, ACO_MODE("rb"));
   if (!f) throw UserError(path, 0, std::string("cannot open: ") + std::strerror(errno));
   std::string data;
   if (S_ISREG(st.st_mode)) data.reserve(static_cast<std::size_t>(st.st_size));
@@ -56,17 +91,17 @@ void write_file_atomic(const std::string& path, const std::string& content) {
   // it, written through (rename() will not replace an existing file there).
   std::random_device entropy;
   const std::string tmp = path + ".tmp-" + std::to_string(entropy()) + std::to_string(::GetCurrentProcessId());
-  FILE* f = std::fopen(tmp.c_str(), "wbx");
+  FILE* f = open_file(tmp, L"wbx");
   if (!f) throw UserError(path, 0, std::string("cannot write: ") + std::strerror(errno));
   const bool written = std::fwrite(content.data(), 1, content.size(), f) == content.size() && std::fflush(f) == 0 &&
                        ::_commit(::_fileno(f)) == 0;
   const int err = errno;
   if (std::fclose(f) != 0 || !written) {
-    std::remove(tmp.c_str());
+    remove_file(tmp);
     throw UserError(path, 0, std::string("cannot write: ") + std::strerror(written ? errno : err));
   }
-  if (!::MoveFileExA(tmp.c_str(), path.c_str(), MOVEFILE_REPLACE_EXISTING | MOVEFILE_WRITE_THROUGH)) {
-    std::remove(tmp.c_str());
+  if (!::MoveFileExW(fs_path(tmp).c_str(), fs_path(path).c_str(), MOVEFILE_REPLACE_EXISTING | MOVEFILE_WRITE_THROUGH)) {
+    remove_file(tmp);
     throw UserError(path, 0, "cannot write (Windows error " + std::to_string(::GetLastError()) + ")");
   }
 #else
@@ -110,13 +145,13 @@ void write_file_atomic(const std::string& path, const std::string& content) {
 }
 
 bool same_file(const std::string& a, const std::string& b) {
-  struct stat sa {}, sb {};
+  Stat sa {}, sb {};
   if (a == "-" || b == "-") return false;
-  if (::stat(a.c_str(), &sa) != 0 || ::stat(b.c_str(), &sb) != 0) return false;
+  if (stat_of(a, &sa) != 0 || stat_of(b, &sb) != 0) return false;
 #ifdef _WIN32
   // No inode numbers on Windows: the same file is the same canonical path.
   std::error_code ec;
-  return std::filesystem::equivalent(a, b, ec);
+  return std::filesystem::equivalent(fs_path(a), fs_path(b), ec);
 #else
   return sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
 #endif

@@ -13,12 +13,12 @@ namespace app {
 
 LoadedHoles load_holes(const std::string& path, const InputOptions& options) {
   // Allegro writes its drill files' number format only in nc_param.txt beside them.
-  const std::filesystem::path nc_param = std::filesystem::path(path).parent_path() / "nc_param.txt";
+  const std::filesystem::path nc_param = fs_path(path).parent_path() / "nc_param.txt";
   std::error_code ec;
   if (path != "-" && options.nc_param.empty() && std::filesystem::is_regular_file(nc_param, ec)) {
     InputOptions with = options;
-    with.nc_param = read_file(nc_param.string());
-    with.nc_param_path = nc_param.string();
+    with.nc_param = read_file(nc_param.u8string());
+    with.nc_param_path = nc_param.u8string();
     return formats::parse_holes(path, read_file(path), with);
   }
   return formats::parse_holes(path, read_file(path), options);

@@ -92,5 +92,49 @@ if wine "$win/bin/acobench.exe" --instances "$(winpath "$root/tests/data/tsplib/
      --out "$(winpath "$work/runs.csv")" >/dev/null 2>&1 && grep -q '^instance,' "$work/runs.csv"; then ok "acobench.exe runs a sweep"
 else bad "acobench.exe"; fi
 
+# Issue 68: names outside the ANSI code page, in folders named so too (Japanese, Cyrillic, Polish,
+# Spanish): a DXF and an Excellon file planned with --report and --setup-sheet, the summary naming the
+# program as typed, the program the same bytes as Linux's for the same name, verified by both builds
+# and read back by rs274; and a missing such file named right in the error line.
+unicode_cases=("基板|ボード|出力" "Платы|плата|программа" "Płytki Łukasza|płytka_żółw|wyjście" "Placas de José|tarjeta_ñandú|programa_ñ")
+for c in "${unicode_cases[@]}"; do
+  IFS='|' read -r folder stem outstem <<<"$c"
+  dir="$work/$folder"; mkdir -p "$dir"
+  cp "$root/samples/plate10.dxf" "$dir/$stem.dxf"
+  cp "$root/tests/data/kicad/video-mm-decimal.drl" "$dir/$stem.drl"
+  for input in "$dir/$stem.dxf" "$dir/$stem.drl"; do
+    what="$folder/$(basename "$input")"
+    out="$dir/$outstem.ngc"; rm -f "$out" "$dir/$outstem.json" "$dir/$outstem.html"
+    opts=(--dialect linuxcnc --iterations 20 --seed 3 --slots skip)
+    if ! wine "$exe" plan "$(winpath "$input")" -o "$(winpath "$out")" --report "$(winpath "$dir/$outstem.json")" \
+         --setup-sheet "$(winpath "$dir/$outstem.html")" "${opts[@]}" 2>"$work/err"; then
+      bad "$what: acodrill.exe plan failed: $(cat "$work/err")"; continue
+    fi
+    if [ -s "$out" ] && [ -s "$dir/$outstem.json" ] && [ -s "$dir/$outstem.html" ]; then ok "$what: program, report and setup sheet written"
+    else bad "$what: an output is missing: $(ls "$dir")"; fi
+    if grep -qF "program: $(winpath "$out")" "$work/err"; then ok "$what: the summary names $outstem.ngc as typed"
+    else bad "$what: the summary garbles the name: $(grep 'program:' "$work/err")"; fi
+    if "$acodrill" verify "$out" --holes "$input" --slots skip -q >/dev/null && \
+       wine "$exe" verify "$(winpath "$out")" --holes "$(winpath "$input")" --slots skip -q >/dev/null 2>&1; then
+      ok "$what: verify (Linux and Windows) accepts the program"
+    else bad "$what: verify refuses the program"; fi
+    expected=$("$acodrill" holes "$input" --slots skip -q | tail -n +2 | wc -l)
+    got=$(rs274_holes "$out")
+    if [ "$got" = "$expected" ]; then ok "$what: rs274 reads $got holes"; else bad "$what: rs274 reads $got holes of $expected"; fi
+    "$acodrill" plan "$input" -o "$dir/linux.ngc" "${opts[@]}" -q
+    if cmp -s "$out" "$dir/linux.ngc"; then ok "$what: the same bytes as Linux's program"
+    else bad "$what: not the same bytes as Linux's: $(diff "$out" "$dir/linux.ngc" | head -n 4 | tr '\n' ' ')"; fi
+  done
+  # KiCad's two drill files of one board, as the plugin hands them over: one job.
+  cp "$root/tests/data/kicad/video-mm-decimal.drl" "$dir/$stem-PTH.drl"
+  if wine "$exe" plan "$(winpath "$dir/$stem-PTH.drl")" "$(winpath "$dir/$stem.drl")" -o "$(winpath "$dir/$outstem-kicad.ngc")" \
+       --machine router --dialect grbl --iterations 10 -q 2>"$work/err" && [ -s "$dir/$outstem-kicad.ngc" ]; then
+    ok "$folder: the plugin's command (two drill files) plans"
+  else bad "$folder: the plugin's command failed: $(cat "$work/err")"; fi
+  wine "$exe" plan "$(winpath "$dir/нет_$stem.drl")" -o "$(winpath "$dir/x.ngc")" 2>"$work/err"; code=$?
+  if [ "$code" = 2 ] && grep -qF "нет_$stem.drl: cannot read" "$work/err"; then ok "$folder: a missing file is named right"
+  else bad "$folder: missing file: exit $code: $(cat "$work/err")"; fi
+done
+
 echo "wine: $passed passed, $failed failed"
 [ "$failed" = 0 ]

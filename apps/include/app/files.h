@@ -3,9 +3,21 @@
 // (or from stdin for "-"), outputs written to a temporary name beside the
 // target and renamed into place only when complete, so a failed run never
 // leaves a truncated program behind and never touches an existing file.
+#include <filesystem>
 #include <string>
+#include <vector>
 
 namespace app {
+
+// acodrill holds every file name as UTF-8, whatever the system (issue 68):
+// this is the name for the file system (on Windows its UTF-16 form, so a
+// name outside the ANSI code page opens).
+std::filesystem::path fs_path(const std::string& utf8);
+
+// The command line as UTF-8: on Windows the arguments as the system holds
+// them (UTF-16), not as the ANSI code page mangles them, and the console
+// told to show UTF-8; elsewhere argv as it is.
+std::vector<std::string> utf8_arguments(int argc, char** argv);
 
 // Reads a whole file, or standard input for "-". Throws UserError.
 std::string read_file(const std::string& path);
