@@ -39,6 +39,36 @@ install_packages() {
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq $recommends $missing >/dev/null
 }
 
+# Issue 69: Debian's KiCad 9 (bookworm-backports) unpacked beside the installed
+# KiCad 6, so the plugin's tests run on both: downloaded once, with the few
+# bookworm libraries KiCad 6 did not bring, through a private apt source list
+# (the machine's own apt configuration is left as it is), into build-deps/kicad9.
+KICAD9_VERSION="9.0.8+dfsg-1~bpo12+1"
+KICAD9_DIR="$ROOT/build-deps/kicad9"
+fetch_kicad9() {
+  [ -f "$KICAD9_DIR/.complete" ] && return 0
+  local apt="$ROOT/build-deps/kicad9-apt"
+  mkdir -p "$apt/etc" "$apt/lists/partial" "$apt/cache/archives/partial" "$apt/debs"
+  cat > "$apt/etc/kicad9.sources" <<SOURCES
+Types: deb
+URIs: http://deb.debian.org/debian
+Suites: bookworm bookworm-backports
+Components: main
+Signed-By: /usr/share/keyrings/debian-archive-keyring.gpg
+SOURCES
+  local opts=(-o Dir::Etc::SourceList=/dev/null -o Dir::Etc::SourceParts="$apt/etc" -o Dir::State::Lists="$apt/lists"
+              -o Dir::Cache="$apt/cache")
+  echo "acodrill: fetching Debian's KiCad $KICAD9_VERSION for the plugin's tests" >&2
+  apt-get "${opts[@]}" -qq update
+  (cd "$apt/debs" && apt-get "${opts[@]}" -qq download "kicad=$KICAD9_VERSION" libgit2-1.5 libnng1 libmbedtls14 \
+     libmbedx509-1 libmbedcrypto7 libhttp-parser2.9 libsecret-1-0 2>/dev/null)
+  rm -rf "$KICAD9_DIR"
+  mkdir -p "$KICAD9_DIR"
+  local deb
+  for deb in "$apt"/debs/*.deb; do dpkg -x "$deb" "$KICAD9_DIR"; done
+  touch "$KICAD9_DIR/.complete"
+}
+
 # build [cmake configure arguments]: configure once (later arguments are
 # ignored; the cache keeps them), then build; BUILD_TARGETS limits what is built.
 build() {

@@ -24,6 +24,11 @@ except ImportError:
     pcbnew = wx = None
 if os.environ.get("ACO_REQUIRE_KICAD") and (pcbnew is None or not os.environ.get("DISPLAY")):
     sys.exit("KiCad's pcbnew (apt install kicad kicad-demos) or a display (xvfb-run) is missing; scripts/test installs them")
+# Issue 69: the same tests on KiCad 9 (ctest's kicad9.*): fail on any other pcbnew rather than test it.
+if os.environ.get("ACO_REQUIRE_KICAD_MAJOR") and (pcbnew is None or
+                                                   pcbnew.GetBuildVersion().split(".")[0] != os.environ["ACO_REQUIRE_KICAD_MAJOR"]):
+    sys.exit(f"KiCad {os.environ['ACO_REQUIRE_KICAD_MAJOR']}'s pcbnew is not the one loaded "
+             f"({pcbnew.GetBuildVersion() if pcbnew else 'none'}); scripts/test unpacks it into build-deps/kicad9")
 
 
 def screenshot(window, path):

@@ -34,6 +34,11 @@ except ImportError:  # scripts/test installs kicad; say so rather than pass
 from acodrill_kicad import job  # noqa: E402  (pure: no pcbnew)
 if os.environ.get("ACO_REQUIRE_KICAD") and (pcbnew is None):
     sys.exit("KiCad's pcbnew (apt install kicad kicad-demos) or a display (xvfb-run) is missing; scripts/test installs them")
+# Issue 69: the same tests on KiCad 9 (ctest's kicad9.*): fail on any other pcbnew rather than test it.
+if os.environ.get("ACO_REQUIRE_KICAD_MAJOR") and (pcbnew is None or
+                                                   pcbnew.GetBuildVersion().split(".")[0] != os.environ["ACO_REQUIRE_KICAD_MAJOR"]):
+    sys.exit(f"KiCad {os.environ['ACO_REQUIRE_KICAD_MAJOR']}'s pcbnew is not the one loaded "
+             f"({pcbnew.GetBuildVersion() if pcbnew else 'none'}); scripts/test unpacks it into build-deps/kicad9")
 
 
 def read(path, mode="r"):
@@ -102,10 +107,23 @@ def match(found, expected, tol):
     return missing_pairs, rest
 
 
+def iu_per_mm():
+    # KiCad 6: pcbnew.IU_PER_MM; 7 on: pcbnew.pcbIUScale.IU_PER_MM.
+    return pcbnew.pcbIUScale.IU_PER_MM if hasattr(pcbnew, "pcbIUScale") else pcbnew.IU_PER_MM
+
+
+def vector(x_mm, y_mm, kind):
+    """A size or point in internal units: VECTOR2I from KiCad 7 on, wxSize/wxPoint on 6."""
+    x, y = int(round(x_mm * iu_per_mm())), int(round(y_mm * iu_per_mm()))
+    if hasattr(pcbnew, "pcbIUScale"):  # KiCad 7 on (KiCad 6 has a VECTOR2I too, but takes wx types)
+        return pcbnew.VECTOR2I(x, y)
+    return pcbnew.wxSize(x, y) if kind == "size" else pcbnew.wxPoint(x, y)
+
+
 def board_round_holes(path):
     """pcbnew's own list: round pad drills (plated or not) and through vias, mm, Y up."""
     b = pcbnew.LoadBoard(path)
-    to_mm = 1.0 / pcbnew.IU_PER_MM
+    to_mm = 1.0 / iu_per_mm()
     holes, ovals = [], 0
     for fp in b.GetFootprints():
         for pad in fp.Pads():
@@ -128,7 +146,7 @@ def kicad_writer_files(path, folder):
     """KiCad's own Excellon files of the board (metric, decimal, PTH and NPTH apart)."""
     b = pcbnew.LoadBoard(path)
     w = pcbnew.EXCELLON_WRITER(b)
-    w.SetOptions(False, False, pcbnew.wxPoint(0, 0), False)
+    w.SetOptions(False, False, vector(0, 0, "point"), False)
     w.SetFormat(True, pcbnew.GENDRILL_WRITER_BASE.DECIMAL_FORMAT, 3, 3)
     w.CreateDrillandMapFilesSet(folder, True, False)
     files = sorted(glob.glob(os.path.join(folder, "*.drl")))
@@ -373,9 +391,9 @@ class DrillShapes(unittest.TestCase):
             pad = pcbnew.PAD(fp)
             pad.SetAttribute(pcbnew.PAD_ATTRIB_PTH)
             pad.SetDrillShape(shape)
-            pad.SetDrillSize(pcbnew.wxSize(pcbnew.FromMM(1.0), pcbnew.FromMM(2.0)))
-            pad.SetSize(pcbnew.wxSize(pcbnew.FromMM(2.0), pcbnew.FromMM(3.0)))
-            pad.SetPosition(pcbnew.wxPoint(pcbnew.FromMM(x), pcbnew.FromMM(10)))
+            pad.SetDrillSize(vector(1.0, 2.0, "size"))
+            pad.SetSize(vector(2.0, 3.0, "size"))
+            pad.SetPosition(vector(x, 10, "point"))
             fp.Add(pad)
         drills, _ = board_drills(board)
         by_x = {round(d.x_mm): d for d in drills}
@@ -385,6 +403,38 @@ class DrillShapes(unittest.TestCase):
         self.assertAlmostEqual(by_x[10].y_mm, -10.0)
         self.assertIsNotNone(by_x[20].slot_end, "oblong: a slot")
         self.assertAlmostEqual(by_x[20].diameter_mm, 1.0)
+
+
+@unittest.skipIf(pcbnew is None, "KiCad's pcbnew is not installed")
+class AcrossKiCadVersions(unittest.TestCase):
+    """Issue 69: whatever KiCad runs the plugin, the demo boards give the holes
+    KiCad 6 gave (tests/data/kicad/BOARD.holes.csv, its round drills), and a
+    board saved in this KiCad's own format (KiCad 9: front/inner/back pad
+    stacks) gives the same drills as the file it was loaded from."""
+
+    def test_the_demo_boards_give_kicad_6s_round_holes(self):
+        from acodrill_kicad.board import board_drills
+        for name in ("pic_programmer", "video", "StickHub", "kit-dev-coldfire-xilinx_5213"):
+            with self.subTest(board=name):
+                want = [tuple(float(v) for v in l.split(",")[:3]) for l in read(os.path.join(ROOT, "tests", "data", "kicad",
+                                                                                                name + ".holes.csv")).splitlines()[1:]]
+                drills, _ = board_drills(pcbnew.LoadBoard(demo(name)))
+                got = [(d.x_mm, d.y_mm, d.diameter_mm) for d in drills if d.slot_end is None]
+                self.assertEqual(len(got), len(want))
+                unmatched, left = match([g[:2] for g in got], [w[:2] for w in want], 0.0011)
+                self.assertEqual((unmatched, left), ([], []))
+                self.assertEqual(sorted(round(g[2], 3) for g in got), sorted(round(w[2], 3) for w in want))
+
+    def test_a_board_saved_in_this_kicads_format_gives_the_same_drills(self):
+        from acodrill_kicad.board import board_drills
+        board = pcbnew.LoadBoard(demo("video"))
+        before, _ = board_drills(board)
+        with tempfile.TemporaryDirectory() as t:
+            path = os.path.join(t, "video-saved.kicad_pcb")
+            pcbnew.SaveBoard(path, board)
+            after, _ = board_drills(pcbnew.LoadBoard(path))
+        self.assertEqual(sorted((round(d.x_mm, 6), round(d.y_mm, 6), round(d.diameter_mm, 6)) for d in after),
+                         sorted((round(d.x_mm, 6), round(d.y_mm, 6), round(d.diameter_mm, 6)) for d in before))
 
 
 class Links(unittest.TestCase):
