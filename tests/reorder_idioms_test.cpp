@@ -125,6 +125,19 @@ TEST(reorder_idioms_test, an_incremental_cycle_is_rewritten_whole_not_kept_besid
   }
 }
 
+TEST(reorder_idioms_test, a_cycle_line_that_does_more_keeps_the_rest_without_its_hole) {
+  // Coolant and a ';' note on the first cycle line: they stay, the hole is written anew.
+  std::string text = kIncrementalCycle;
+  const std::string first = "G91 G98 G81 X10. Z-7. R-8. F100.\n";
+  text.replace(text.find(first), first.size(), "G91 G98 G81 X10. Z-7. R-8. F100. M8 ; first hole\n");
+  expect_reordered_exactly("a cycle line with more", text, "--keep-style", 5);
+  testutil::TempDir t;
+  testutil::spit(t / "in.nc", text);
+  auto r = testutil::acodrill_run("plan " + (t / "in.nc") + " -o - -q --keep-style");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_THAT(r.out, ::testing::HasSubstr("\nG91 M8 ; first hole\n"));
+}
+
 TEST(reorder_idioms_test, k_and_l_repeats_drill_each_step_in_incremental_mode) {
   // rs274 repeats a G91 cycle by L; K is Fanuc's word for the same: both give the same holes.
   const Holes by_l = rs274_holes(repeats("L4"));

@@ -271,9 +271,14 @@ std::string without_hole_words(std::string_view raw) {
   std::string kept, comments;
   int depth = 0;
   std::string code;
-  for (char ch : raw) {
+  for (std::size_t c = 0; c < raw.size(); ++c) {
+    const char ch = raw[c];
+    if (depth == 0 && ch == ';') {  // the rest of the line is a comment
+      comments += std::string(raw.substr(c));
+      break;
+    }
     if (ch == '(') ++depth;
-    if (depth > 0 || ch == ';') {
+    if (depth > 0) {
       comments += ch;
       if (ch == ')') --depth;
       continue;
