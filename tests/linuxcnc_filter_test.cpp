@@ -91,6 +91,30 @@ TEST(linuxcnc_filter, a_dxf_opens_too_and_the_ini_chooses_units_and_tools) {
   EXPECT_THAT(d.out, ::testing::HasSubstr("M30"));
 }
 
+// Issue 71 and 70: a DXF whose holes are polygons opens in AXIS with ROUND_CONTOURS = YES, and
+// EXCELLON_FORMAT reads a drill file that states nothing.
+TEST(linuxcnc_filter, the_ini_reads_round_contours_and_states_an_excellon_format) {
+  testutil::TempDir t;
+  const std::string dxf = testutil::data("dxf-contours/inkscape_r12_line_polygons.dxf");
+  testutil::spit(t / "no.ini", "[ACODRILL]\nTIME_LIMIT = 0.5\nORIGIN = drawing\nROUND_CONTOURS = no\n");
+  const auto refused = run_as_axis(dxf, t / "no.ini");
+  EXPECT_NE(refused.code, 0);
+  EXPECT_THAT(refused.err, ::testing::HasSubstr("--round-contours reads them as holes"));
+  testutil::spit(t / "yes.ini", "[ACODRILL]\nTIME_LIMIT = 0.5\nORIGIN = drawing\nROUND_CONTOURS = YES\n");
+  const auto read = run_as_axis(dxf, t / "yes.ini");
+  ASSERT_EQ(read.code, 0) << read.err;
+  expect_holes(read.out, testutil::data("dxf-contours/inkscape_r12_line_polygons.round.csv"), "round contours");
+  // One-digit numbers a default 2:4 reading puts within a millimetre; the INI states LZ.
+  testutil::spit(t / "a.drl", "M48\nINCH\nT1C0.02\n%\nT1\nX1Y1\nX2Y1\nX3Y2\nM30\n");
+  const auto refused_drl = run_as_axis(t / "a.drl", t / "no.ini");
+  EXPECT_THAT(refused_drl.err, ::testing::HasSubstr("--excellon-format"));
+  testutil::spit(t / "lz.ini", "[ACODRILL]\nTIME_LIMIT = 0.5\nEXCELLON_FORMAT = inch,2:4,lz\nMACHINE = vf2\n");
+  const auto lz = run_as_axis(t / "a.drl", t / "lz.ini");
+  ASSERT_EQ(lz.code, 0) << lz.err;
+  testutil::spit(t / "bad.ini", "[ACODRILL]\nROUND_CONTOURS = maybe\n");
+  EXPECT_THAT(run_as_axis(dxf, t / "bad.ini").err, ::testing::HasSubstr("bad.ini:2: [ACODRILL] ROUND_CONTOURS is YES or NO"));
+}
+
 TEST(linuxcnc_filter, a_bad_file_or_setting_is_one_line_a_failure_and_no_program) {
   testutil::TempDir t;
   testutil::spit(t / "bad.drl", "M48\nMETRIC\nT1C0.8\n%\nT1\nX1.0Y\n");

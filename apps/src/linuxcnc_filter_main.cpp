@@ -42,7 +42,8 @@ constexpr const char* kUsage =
     "  TIME_LIMIT = 5              seconds the colony may take (default 5)\n"
     "  UNITS = mm                  program units (default: [TRAJ] LINEAR_UNITS)\n"
     "  also PROBE_PLATE, SLOTS, MATERIAL, THICKNESS, INPUT_UNITS, TOOLS, SIDE, MIRROR_AXIS, ALIGNMENT_PINS,\n"
-    "  APERTURES, SEED, THREADS: the acodrill plan options of the same names.\n"
+    "  APERTURES, SEED, THREADS, EXCELLON_FORMAT, DXF_UNITS, ROUND_TOLERANCE: the acodrill plan options of\n"
+    "  the same names; ROUND_CONTOURS = YES reads DXF holes drawn without a CIRCLE (--round-contours).\n"
     "LinuxCNC sets INI_FILE_NAME to the INI it runs; without it the defaults apply.\n";
 
 // The [ACODRILL] keys and the `acodrill plan` options they become.
@@ -53,9 +54,14 @@ const std::map<std::string, std::string>& settings() {
       {"PROBE_PLATE", "--probe-plate"}, {"SLOTS", "--slots"},         {"MATERIAL", "--material"},
       {"THICKNESS", "--thickness"},     {"INPUT_UNITS", "--input-units"}, {"TOOLS", "--tools"},
       {"SIDE", "--side"},               {"MIRROR_AXIS", "--mirror-axis"}, {"ALIGNMENT_PINS", "--alignment-pins"},
-      {"APERTURES", "--apertures"},     {"SEED", "--seed"},           {"THREADS", "--threads"}};
+      {"APERTURES", "--apertures"},     {"SEED", "--seed"},           {"THREADS", "--threads"},
+      {"EXCELLON_FORMAT", "--excellon-format"}, {"DXF_UNITS", "--dxf-units"}, {"ROUND_TOLERANCE", "--round-tolerance"},
+      {"ROUND_CONTOURS", "--round-contours"}};
   return keys;
 }
+
+// Keys that switch an option on or off (YES/NO, TRUE/FALSE, 1/0) rather than give it a value.
+bool is_switch(const std::string& key) { return key == "ROUND_CONTOURS"; }
 
 [[noreturn]] void fail(const std::string& where, const std::string& what) {
   std::fprintf(stderr, "acodrill: error: %s%s%s\n", where.c_str(), where.empty() ? "" : ": ", what.c_str());
@@ -150,7 +156,17 @@ int main(int argc, char** argv) {
     const std::string u = upper(traj.at("LINEAR_UNITS").value);
     args.insert(args.end(), {"--units", u == "INCH" || u == "IN" || u == "IMPERIAL" ? "inch" : "mm"});
   }
-  for (const auto& [key, s] : acodrill) args.insert(args.end(), {settings().at(key), s.value});
+  for (const auto& [key, s] : acodrill) {
+    if (!is_switch(key)) {
+      args.insert(args.end(), {settings().at(key), s.value});
+      continue;
+    }
+    const std::string v = upper(s.value);
+    if (v == "YES" || v == "TRUE" || v == "1" || v == "ON") args.push_back(settings().at(key));
+    else if (v != "NO" && v != "FALSE" && v != "0" && v != "OFF") {
+      fail(std::string(ini) + ":" + std::to_string(s.line), "[ACODRILL] " + key + " is YES or NO (got \"" + s.value + "\")");
+    }
+  }
 
   std::vector<char*> argv_out;
   for (std::string& a : args) argv_out.push_back(a.data());
