@@ -39,7 +39,7 @@ def pieces_of(entity, out):
         return
     p = ezpath.make_path(entity)
     pts = [(v.x, v.y) for v in p.flattening(distance=0.0005)]
-    closed = t in ("LWPOLYLINE", "POLYLINE") and entity.closed
+    closed = (t == "LWPOLYLINE" and entity.closed) or (t == "POLYLINE" and entity.is_closed)
     if t == "ARC" and abs((entity.dxf.end_angle - entity.dxf.start_angle) % 360) < 1e-9:
         closed = True
     if len(pts) >= 2 and math.dist(pts[0], pts[-1]) < 1e-9:
@@ -172,6 +172,26 @@ def main():
     add_line_loop(msp, [(60, 0), (80, 0), (80, 15), (60, 15)])
     add_line_loop(msp, polygon((10, 40), 2.0, 16))
     save(doc, folder, "openscad_r12_line_polygons")
+
+    # R12 POLYLINEs (VERTEX ... SEQEND): a closed 24-gon, a closed pair of bulged
+    # vertices, and an open one that stays no hole; a loop of LINEs and ARCs
+    # joined end to end: a 24-gon with every other edge an ARC on the circle.
+    doc = new("R12", units=4)
+    msp = doc.modelspace()
+    msp.add_polyline2d(polygon((10, 10), 2.0, 24), close=True)
+    bulged = msp.add_polyline2d([(30, 10), (34, 10)], close=True)
+    for v in bulged.vertices:
+        v.dxf.bulge = 1.0
+    msp.add_polyline2d(polygon((50, 10), 2.0, 24)[:12])
+    cx, cy, r = 70, 10, 3.0
+    corners = polygon((cx, cy), r, 24)
+    for k in range(24):
+        a, b = corners[k], corners[(k + 1) % 24]
+        if k % 2:
+            msp.add_arc((cx, cy), r, math.degrees(2 * math.pi * k / 24), math.degrees(2 * math.pi * (k + 1) / 24))
+        else:
+            msp.add_line(a, b)
+    save(doc, folder, "r12_polylines_and_line_arc_loops")
 
     # OpenSCAD's current exporter: closed LWPOLYLINE polygons.
     doc = new("R2010")
