@@ -672,13 +672,17 @@ void Reader::check_plausible() {
     y0 = std::min(y0, h.center.y), y1 = std::max(y1, h.center.y);
   }
   const double extent = std::max(x1 - x0, y1 - y0);
-  // Holes whose centre lies inside another hole, on a grid of the largest diameter.
+  // Holes whose centre lies inside another hole, on a grid of the largest
+  // diameter laid from the extent's corner (only for a plausible extent, so
+  // the grid's cells stay countable).
   std::size_t inside = 0;
   double largest = 0;
   for (const aco::Hole& h : out_.holes) largest = std::max(largest, h.diameter);
-  if (largest > 0) {
+  if (largest > 1e-6 && extent >= 1.0 && extent <= 2000.0) {
     std::map<std::pair<long long, long long>, std::vector<std::size_t>> grid;
-    auto key = [&](aco::Point2 p) { return std::make_pair(std::llround(std::floor(p.x / largest)), std::llround(std::floor(p.y / largest))); };
+    auto key = [&](aco::Point2 p) {
+      return std::make_pair(std::llround(std::floor((p.x - x0) / largest)), std::llround(std::floor((p.y - y0) / largest)));
+    };
     for (std::size_t i = 0; i < out_.holes.size(); ++i) grid[key(out_.holes[i].center)].push_back(i);
     for (std::size_t i = 0; i < out_.holes.size() && inside * 2 <= out_.holes.size(); ++i) {
       const aco::Hole& h = out_.holes[i];
