@@ -495,7 +495,6 @@ TEST(excellon_test, every_drill_file_of_sixteen_eda_tools_is_read_right_or_refus
        "holes as read lie within 0.899 mm: the units or the zeros are likely wrong"},
       {"test_syntax_error.exc", CorpusFile::Refused, "test_syntax_error.exc:12: tool T99 is not defined"},
   };
-  std::size_t files = 0;
   for (const CorpusFile& c : corpus) {
     SCOPED_TRACE(c.path);
     const std::string path = data("gerbonara-drill/" + c.path);
@@ -504,7 +503,6 @@ TEST(excellon_test, every_drill_file_of_sixteen_eda_tools_is_read_right_or_refus
       EXPECT_EQ(r.code, 2);
       EXPECT_EQ(testutil::count_lines(r.err), 1) << r.err;
       EXPECT_THAT(r.err, ::testing::HasSubstr(c.refusal));
-      ++files;
       continue;
     }
     app::LoadedHoles got = app::load_holes(path, hits_only());
@@ -523,7 +521,5 @@ TEST(excellon_test, every_drill_file_of_sixteen_eda_tools_is_read_right_or_refus
       for (const Hit& w : want) distinct.insert({std::llround(w.x * 1e3), std::llround(w.y * 1e3)});
       EXPECT_EQ(mine.size(), distinct.size());
     }
-    ++files;
   }
-  EXPECT_EQ(files, 33u);
 }

@@ -218,3 +218,17 @@ TEST(reorder_idioms_test, a_program_that_fails_its_own_check_is_never_written) {
     EXPECT_FALSE(std::filesystem::exists(t / "r.json"));
   }
 }
+
+// The check takes a tool table's ranges as plan does: a 0.8 mm drill that
+// the table gives holes from 0.75 to 0.85 mm drills them, no fault.
+TEST(reorder_idioms_test, the_check_takes_a_tool_tables_ranges_as_plan_chose_them) {
+  testutil::TempDir t;
+  testutil::spit(t / "plate.csv", "x,y,d\n0,0,0.78\n10,0,0.82\n20,5,0.8\n");
+  testutil::spit(t / "tools.json", "{\"tools\": [{\"number\": 4, \"diameter_mm\": 0.8, \"min_hole_mm\": 0.75, \"max_hole_mm\": 0.85}]}");
+  auto r = testutil::acodrill_run("plan " + (t / "plate.csv") + " -o " + (t / "a.nc") + " -q --tools " + (t / "tools.json"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_THAT(testutil::slurp(t / "a.nc"), ::testing::HasSubstr("T4 M06"));
+  // verify without the table knows nothing of the range: the 0.78 and 0.82 mm holes are faults there.
+  auto v = testutil::acodrill_run("verify " + (t / "a.nc") + " --holes " + (t / "plate.csv") + " -q");
+  EXPECT_EQ(v.code, 1) << v.out;
+}

@@ -98,12 +98,10 @@ int main(int argc, char** argv) {
 #ifdef _WIN32
   ::_setmode(::_fileno(stdout), _O_BINARY);  // output as in a file: LF, not CRLF
 #endif
-  std::vector<std::string> arguments = app::utf8_arguments(argc, argv);  // every name as UTF-8, Windows too
-  std::vector<char*> utf8_argv;
-  for (std::string& a : arguments) utf8_argv.push_back(a.data());
-  utf8_argv.push_back(nullptr);
-  argc = static_cast<int>(arguments.size());
-  argv = utf8_argv.data();
+  // Every name as UTF-8, on Windows too (issue 68): the arguments as the system holds them.
+  app::Utf8Argv utf8(argc, argv);
+  argc = utf8.argc();
+  argv = utf8.argv();
   CLI::App cli{"acobench runs a grid of solver settings over instances: every combination of the listed values, "
                "each with seeds 1..N, one CSV row per run.\n\n"
                "Examples:\n"

@@ -980,12 +980,9 @@ int main(int argc, char** argv) {
   ::_setmode(::_fileno(stdout), _O_BINARY);
 #endif
   // Every name as UTF-8, on Windows too (issue 68): the arguments as the system holds them.
-  std::vector<std::string> arguments = app::utf8_arguments(argc, argv);
-  std::vector<char*> utf8_argv;
-  for (std::string& a : arguments) utf8_argv.push_back(a.data());
-  utf8_argv.push_back(nullptr);
-  argc = static_cast<int>(arguments.size());
-  argv = utf8_argv.data();
+  app::Utf8Argv utf8(argc, argv);
+  argc = utf8.argc();
+  argv = utf8.argv();
   CLI::App cli{"acodrill orders the drill holes of a part so the spindle travels as little as possible, "
                "and writes the G-code that drills them.\n\n"
                "Examples:\n"

@@ -25,19 +25,18 @@ namespace app {
 
 std::filesystem::path fs_path(const std::string& utf8) { return std::filesystem::u8path(utf8); }
 
-std::vector<std::string> utf8_arguments(int argc, char** argv) {
+Utf8Argv::Utf8Argv(int argc, char** argv) : args_(argv, argv + argc) {
 #ifdef _WIN32
   int count = 0;
-  LPWSTR* wide = ::CommandLineToArgvW(::GetCommandLineW(), &count);
-  if (wide) {
-    std::vector<std::string> args;
-    for (int i = 0; i < count; ++i) args.push_back(std::filesystem::path(wide[i]).u8string());
+  if (LPWSTR* wide = ::CommandLineToArgvW(::GetCommandLineW(), &count)) {
+    args_.clear();
+    for (int i = 0; i < count; ++i) args_.push_back(std::filesystem::path(wide[i]).u8string());
     ::LocalFree(wide);
     ::SetConsoleOutputCP(CP_UTF8);  // names in messages as the user typed them
-    return args;
   }
 #endif
-  return std::vector<std::string>(argv, argv + argc);
+  for (std::string& a : args_) pointers_.push_back(a.data());
+  pointers_.push_back(nullptr);
 }
 
 namespace {

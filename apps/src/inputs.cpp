@@ -18,7 +18,6 @@ LoadedHoles load_holes(const std::string& path, const InputOptions& options) {
   if (path != "-" && options.nc_param.empty() && std::filesystem::is_regular_file(nc_param, ec)) {
     InputOptions with = options;
     with.nc_param = read_file(nc_param.u8string());
-    with.nc_param_path = nc_param.u8string();
     return formats::parse_holes(path, read_file(path), with);
   }
   return formats::parse_holes(path, read_file(path), options);

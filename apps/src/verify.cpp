@@ -183,10 +183,7 @@ planning::Tooling tooling_of_table(const planning::ToolTable& table) {
       t.end_mill_mm = d;
       continue;
     }
-    if (!e.takes_mm.empty()) {
-      for (double hole : e.takes_mm) t.drills.push_back({d, std::max(0.0, d - hole) + 0.0005, std::max(0.0, hole - d) + 0.0005});
-      continue;
-    }
+    // A --tools table gives ranges (takes_mm is the owned-tools plan's, never parsed).
     // fits(hole): d >= hole - minus and d <= hole + plus, for hole in [min, max].
     t.drills.push_back({d, std::max(0.0, e.max_hole_mm - d), std::max(0.0, d - e.min_hole_mm)});
   }

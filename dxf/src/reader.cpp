@@ -178,10 +178,11 @@ class Parser {
   std::vector<Tag> read_tags();
   void place_piece(const contours::Piece& p, const Affine& to_world);
   void add_round_contours(double unit);
-  void check_units(double unit);
+  void check_units();
   void expand_insert(const Insert& ins, const Affine& parent, int depth);
-  bool is_paper(const Fields& f) const {
-    return f.paper_space || (!f.owner.empty() && paper_records_.count(upper(f.owner)) != 0);
+  bool is_paper(const Fields& f) const { return is_paper(f.paper_space, f.owner); }
+  bool is_paper(bool paper_space, std::string_view owner) const {
+    return paper_space || (!owner.empty() && paper_records_.count(upper(owner)) != 0);
   }
 
   TagReader tags_;
@@ -312,7 +313,7 @@ std::optional<contours::Piece> Parser::read_piece(std::string_view type) {
     if (t.code == 220) p.extrusion[1] = parse_double(t);
     if (t.code == 230) p.extrusion[2] = parse_double(t);
   }
-  if (paper || (!owner.empty() && paper_records_.count(upper(owner)) != 0)) {
+  if (is_paper(paper, owner)) {
     if (type == "POLYLINE") {
       while (at0("VERTEX")) read_tags();
       if (at0("SEQEND")) read_tags();
@@ -325,12 +326,7 @@ std::optional<contours::Piece> Parser::read_piece(std::string_view type) {
     }
     return fallback;
   };
-  auto flags = [&](const std::vector<Tag>& ts) {
-    for (const Tag& t : ts) {
-      if (t.code == 70) return parse_int(t, result_.diagnostics);
-    }
-    return 0;
-  };
+
   if (type == "LINE") {
     p.extrusion = {0, 0, 1};  // LINE is in world coordinates
     const Vec3 a{number(10, 0), number(20, 0), number(30, 0)}, b{number(11, 0), number(21, 0), number(31, 0)};
@@ -383,7 +379,10 @@ std::optional<contours::Piece> Parser::read_piece(std::string_view type) {
   } else if (type == "LWPOLYLINE" || type == "POLYLINE") {
     std::vector<Vec3> vertices;
     std::vector<double> bulges;
-    int flag = flags(tags);
+    int flag = 0;
+    for (const Tag& t : tags) {
+      if (t.code == 70) flag = parse_int(t, result_.diagnostics);
+    }
     if (type == "LWPOLYLINE") {
       const double z = number(38, 0);
       for (const Tag& t : tags) {
@@ -764,7 +763,7 @@ void Parser::expand() {
   result_.duplicates_removed = aco::remove_duplicate_holes(out, kTol);
   raw_.clear();
   add_round_contours(unit);
-  check_units(unit);
+  check_units();
 }
 
 void Parser::add_round_contours(double unit) {
@@ -815,7 +814,7 @@ void Parser::add_round_contours(double unit) {
 
 // A header that states its units wrongly (Onshape writes inch for a drawing
 // made in mm): holes and an extent that make no sense in those units.
-void Parser::check_units(double unit) {
+void Parser::check_units() {
   // Only a unit larger than the millimetre can blow a drawing up so.
   if (insunits_ <= 0 || insunits_to_mm(insunits_) <= 1.0 || options_.units_override_mm > 0 || result_.holes.empty()) return;
   std::vector<double> d;
@@ -835,7 +834,6 @@ void Parser::check_units(double unit) {
                 "if it was drawn in another unit (Onshape writes inch for mm drawings), give --dxf-units mm",
                 name, insunits_, median, extent);
   result_.diagnostics.push_back({Severity::Warning, 0, text});
-  (void)unit;
 }
 
 void check_text_encoding(std::string_view data) {

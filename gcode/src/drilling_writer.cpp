@@ -156,13 +156,7 @@ void write_dialect(std::ostream& out, const DrillingProgram& p, const DrillingWr
   w.line("%");
   char oline[16];
   std::snprintf(oline, sizeof oline, "O%05d", s.program_number);
-  const std::string named = std::string(oline) + " (" + comment_text(s.program_name) + ")";
-  if (named.size() <= kMaxLineChars) {
-    w.line(named);
-  } else {
-    w.line(oline);
-    for (const std::string& l : comment_lines(s.program_name)) w.line(l);
-  }
+  for (const std::string& l : code_with_comment(oline, s.program_name)) w.line(l);
   for (const std::string& text : s.header_comments) {
     for (const std::string& l : comment_lines(text)) w.line(l);
   }

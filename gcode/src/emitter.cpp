@@ -36,15 +36,8 @@ class Writer {
   void comment(const std::string& text) {
     for (const std::string& l : comment_lines(text)) line(l);
   }
-  // "CODE (TEXT)" where it fits; else the text's comment lines, then the code alone.
   void with_comment(const std::string& code, const std::string& text) {
-    const std::string one = code + " (" + comment_text(text) + ")";
-    if (one.size() <= kMaxLineChars) {
-      line(one);
-      return;
-    }
-    comment(text);
-    line(code);
+    for (const std::string& l : code_with_comment(code, text)) line(l);
   }
 
   std::string z_home() const { return z_home_block(s_.dialect); }
@@ -129,6 +122,14 @@ std::string comment_text(std::string text) {
 std::vector<std::string> comment_lines(const std::string& text) {
   std::vector<std::string> lines = wrap_words(comment_text(text), kMaxLineChars - 2);
   for (std::string& l : lines) l = "(" + l + ")";
+  return lines;
+}
+
+std::vector<std::string> code_with_comment(const std::string& code, const std::string& text) {
+  const std::string one = code + " (" + comment_text(text) + ")";
+  if (one.size() <= kMaxLineChars) return {one};
+  std::vector<std::string> lines = comment_lines(text);
+  lines.push_back(code);
   return lines;
 }
 

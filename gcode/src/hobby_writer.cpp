@@ -9,8 +9,6 @@ namespace gcode {
 namespace {
 
 constexpr double kMmPerInch = 25.4;
-constexpr std::size_t kMaxLine = kMaxLineChars;
-
 // "0.6", "1", "0.0236": a size as short as it is exact to the program's digits.
 std::string short_number(double v, int decimals) {
   std::string s = format_number(v, decimals);
@@ -45,7 +43,7 @@ std::string HobbyWriter::plain(const std::string& text) const {
 }
 
 void HobbyWriter::comment(const std::string& text) {
-  for (const std::string& piece : wrap_words(plain(text), kMaxLine - 2)) {
+  for (const std::string& piece : wrap_words(plain(text), kMaxLineChars - 2)) {
     if (dialect_ == Dialect::Marlin) line("; " + piece);
     else line("(" + piece + ")");
   }
@@ -111,7 +109,7 @@ void HobbyWriter::message_pause(const std::string& message, const std::string& s
   const std::string brief = plain(short_message);
   if (dialect_ == Dialect::Marlin) {
     comment(message);
-    if (3 + brief.size() <= kMaxLine) {
+    if (3 + brief.size() <= kMaxLineChars) {
       line("M0 " + brief);
     } else {
       comment(brief);
@@ -119,8 +117,8 @@ void HobbyWriter::message_pause(const std::string& message, const std::string& s
     }
     return;
   }
-  for (const std::string& piece : wrap_words(plain(message), kMaxLine - 7)) line("(MSG, " + piece + ")");
-  if (5 + brief.size() <= kMaxLine) line("M0 (" + brief + ")");
+  for (const std::string& piece : wrap_words(plain(message), kMaxLineChars - 7)) line("(MSG, " + piece + ")");
+  if (5 + brief.size() <= kMaxLineChars) line("M0 (" + brief + ")");
   else line("M0");
 }
 

@@ -16,8 +16,18 @@ std::filesystem::path fs_path(const std::string& utf8);
 
 // The command line as UTF-8: on Windows the arguments as the system holds
 // them (UTF-16), not as the ANSI code page mangles them, and the console
-// told to show UTF-8; elsewhere argv as it is.
-std::vector<std::string> utf8_arguments(int argc, char** argv);
+// told to show UTF-8; elsewhere argv as it is. Holds the strings for as
+// long as `argv()` is used.
+class Utf8Argv {
+ public:
+  Utf8Argv(int argc, char** argv);
+  int argc() const { return static_cast<int>(args_.size()); }
+  char** argv() { return pointers_.data(); }
+
+ private:
+  std::vector<std::string> args_;
+  std::vector<char*> pointers_;
+};
 
 // Reads a whole file, or standard input for "-". Throws UserError.
 std::string read_file(const std::string& path);

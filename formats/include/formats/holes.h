@@ -66,14 +66,14 @@ struct InputOptions {
   std::string aperture_list, aperture_list_path;
   // Excellon: the number format stated outright (--excellon-format), which
   // wins over anything the file says or its numbers suggest; and Allegro's
-  // nc_param.txt found beside a drill file (its text and path; empty: none).
+  // nc_param.txt found beside a drill file (its text; empty: none).
   struct ExcellonFormat {
     bool metric = false;
     int int_digits = 0, dec_digits = 0;
     bool leading_zeros_kept = false;
   };
   std::optional<ExcellonFormat> excellon_format;
-  std::string nc_param, nc_param_path;
+  std::string nc_param;
 };
 
 struct Note {

@@ -135,6 +135,8 @@ constexpr std::size_t kMaxLineChars = 78;
 
 // The text as "(...)" comment lines within kMaxLineChars, words whole.
 std::vector<std::string> comment_lines(const std::string& text);
+// "CODE (TEXT)" where it fits on one line; else the text's comment lines, then the code alone.
+std::vector<std::string> code_with_comment(const std::string& code, const std::string& text);
 
 // The block that takes Z to machine home: "G53 G00 Z0." (HAAS, LinuxCNC) or
 // "G91 G28 Z0." and "G90" (Fanuc).
