@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <numeric>
@@ -216,6 +217,81 @@ TEST(solver_test, stop_rules) {
   params.iterations = 100000;
   params.stall_iterations = 5;
   EXPECT_EQ(aco::solve(p, params).stop_reason, "stalled");
+}
+
+TEST(solver_test, a_run_in_slices_is_the_run_in_one) {
+  // Issue 64: a front end that must have control back (a browser's worker)
+  // runs the colony a few iterations at a time; the route, its length and
+  // its history are those of one solve(), however it is sliced, on any
+  // thread count, for every algorithm, with kicks and restarts (focused, 300
+  // iterations) and with the improvements of several ants merged (12 000 holes).
+  struct Case {
+    aco::Algorithm algorithm;
+    std::size_t holes;
+    int iterations;
+    aco::LocalSearch ls;
+  };
+  for (const Case& c : {Case{aco::Algorithm::AntSystem, 60, 20, aco::LocalSearch::None},
+                        Case{aco::Algorithm::MaxMinAntSystem, 300, 25, aco::LocalSearch::TwoOptOrOpt},
+                        Case{aco::Algorithm::AntColonySystem, 300, 25, aco::LocalSearch::TwoOptOrOpt},
+                        Case{aco::Algorithm::FocusedAcs, 900, 300, aco::LocalSearch::ThreeOpt},
+                        Case{aco::Algorithm::FocusedAcs, 12000, 8, aco::LocalSearch::ThreeOpt}}) {
+    const aco::Problem p = random_problem(c.holes, 21, aco::Shape::OpenPath);
+    aco::Params params = quick(c.algorithm, c.ls);
+    params.iterations = c.iterations;
+    const aco::Solution whole = aco::solve(p, params);
+    for (int threads : {1, 2}) {
+      params.threads = threads;
+      aco::ColonyRun run(p, params);
+      int slices = 0;
+      while (!run.advance(1 + slices % 3)) ++slices;
+      const aco::Solution sliced = run.finish();
+      SCOPED_TRACE(std::string(aco::to_string(c.algorithm)) + " " + std::to_string(c.holes) + " holes, " +
+                   std::to_string(threads) + " threads");
+      EXPECT_GT(slices, 3);
+      EXPECT_EQ(sliced.order, whole.order);
+      EXPECT_EQ(sliced.length, whole.length);
+      EXPECT_EQ(sliced.iterations, whole.iterations);
+      EXPECT_EQ(sliced.stop_reason, whole.stop_reason);
+      ASSERT_EQ(sliced.trace.size(), whole.trace.size());
+      for (std::size_t i = 0; i < whole.trace.size(); ++i) {
+        EXPECT_EQ(sliced.trace[i].iteration, whole.trace[i].iteration);
+        EXPECT_EQ(sliced.trace[i].best_length, whole.trace[i].best_length);
+      }
+    }
+  }
+}
+
+TEST(solver_test, the_stop_flag_ends_the_run_with_its_best_route) {
+  const aco::Problem p = random_problem(500, 22, aco::Shape::OpenPath);
+  aco::Params params = quick(aco::Algorithm::FocusedAcs, aco::LocalSearch::ThreeOpt);
+  params.iterations = 100000;
+  std::atomic<bool> stop{false};
+  params.stop = &stop;
+  int seen = 0;
+  params.on_iteration = [&](const aco::Progress&) {
+    if (++seen == 7) stop.store(true);
+  };
+  const aco::Solution s = aco::solve(p, params);
+  EXPECT_EQ(s.stop_reason, "stopped");
+  EXPECT_EQ(s.iterations, 7);
+  ASSERT_TRUE(aco::is_permutation_of(p, s.order));
+  EXPECT_NEAR(s.length, aco::route_length(p, s.order), 1e-9 * s.length);
+  // Set before the run: the first route (nearest neighbour, improved), no iteration.
+  const aco::Solution none = aco::solve(p, params);
+  EXPECT_EQ(none.iterations, 0);
+  EXPECT_EQ(none.stop_reason, "stopped");
+  EXPECT_TRUE(aco::is_permutation_of(p, none.order));
+  EXPECT_LE(none.length, aco::route_length(p, aco::nearest_neighbor(p)));
+  // finish() before the run has ended: the best so far, "stopped".
+  stop.store(false);
+  params.on_iteration = nullptr;
+  aco::ColonyRun run(p, params);
+  EXPECT_FALSE(run.advance(5));
+  const aco::Solution early = run.finish();
+  EXPECT_EQ(early.iterations, 5);
+  EXPECT_EQ(early.stop_reason, "stopped");
+  EXPECT_TRUE(aco::is_permutation_of(p, early.order));
 }
 
 TEST(solver_test, reading_the_input_comes_off_the_time_limit_of_the_whole_run) {

@@ -7,16 +7,16 @@
 namespace aco::detail {
 
 Colony::Colony(const Problem& problem, const Params& params, Team& team, const Clock& started)
-  : clock_(started), problem_(problem), p_(params), team_(team), space_(problem), n_(space_.holes()) {
+  : clock_(started), problem_(problem), p_(params), team_(&team), space_(problem), n_(space_.holes()) {
   if (n_ <= kFullListLimit) {
-    cand_ = detail::build_candidates(space_, static_cast<int>(n_) - 1, team_);
+    cand_ = detail::build_candidates(space_, static_cast<int>(n_) - 1, *team_);
   } else if (uses_alpha_lists(n_, p_.local_search)) {
-    Candidates nearest = detail::joined_nearest(space_, kAlphaFrom, team_);
+    Candidates nearest = detail::joined_nearest(space_, kAlphaFrom, *team_);
     std::vector<double>().swap(nearest.length);  // not read by alpha_candidates: 13 MB less at 100 000 holes
-    cand_ = detail::alpha_candidates(space_, nearest, p_.candidates, ascent_iterations(n_, p_.time_limit_s), team_,
+    cand_ = detail::alpha_candidates(space_, nearest, p_.candidates, ascent_iterations(n_, p_.time_limit_s), *team_,
                                      p_.local_search == LocalSearch::FiveOpt);
   } else {
-    cand_ = detail::build_candidates(space_, p_.candidates, team_);
+    cand_ = detail::build_candidates(space_, p_.candidates, *team_);
   }
   k_ = cand_.k;
   const std::size_t slots = static_cast<std::size_t>(n_) * k_;

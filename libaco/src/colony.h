@@ -193,8 +193,16 @@ class Colony {
   // and the heuristic weights (colony.cpp).
   Colony(const Problem& problem, const Params& params, Team& team, const Clock& started);
 
-  // The whole run: rounds of ants until a limit (rounds.cpp).
-  Solution run();
+  // The run (rounds.cpp), in slices: start() makes the first route and
+  // trail; advance() runs rounds of ants on `team` until the run ends
+  // (true) or the slice does: after `max_iterations` more iterations (0:
+  // no bound) or once the clock reaches `until_s` (0: none). A slice ends
+  // between two iterations, with the next one's ants drawn, so any slicing
+  // runs the same iterations as one advance(). finish() gives the best
+  // route; before the run has ended it ends it there ("stopped").
+  void start();
+  bool advance(Team& team, int max_iterations, double until_s);
+  Solution finish();
 
  private:
   // What run() keeps from round to round (rounds.cpp sets it up).
@@ -215,6 +223,10 @@ class Colony {
     std::vector<HoleIndex> restart_best;  // the best since the last restart, and its length
     double restart_best_len = 0.0;
     int it = 1;  // the iteration under way
+    int completed = 0;  // iterations run
+    bool ended = false;
+    int slice_last_it = 0;     // the slice's last iteration (0: none)
+    double slice_until_s = 0;  // the slice ends at this clock (0: none)
     // Focused ants draw how many edges they may change, first thing; they are
     // handed out largest first, so a round ends on short ones and the workers
     // finish it together.
@@ -320,7 +332,7 @@ class Colony {
   Clock clock_;
   const Problem& problem_;
   Params p_;
-  detail::Team& team_;
+  detail::Team* team_;  // the team of the slice under way (advance())
   Space space_;
   HoleIndex n_;
   Candidates cand_;

@@ -9,7 +9,7 @@
 
 namespace aco::detail {
 
-Solution Colony::run() {
+void Colony::start() {
   RunState& s = run_;
   s.sol.algorithm = p_.algorithm;
   s.sol.ants = p_.ants;
@@ -67,11 +67,29 @@ Solution Colony::run() {
   s.ant_of_slot.resize(static_cast<std::size_t>(p_.ants));
   s.scale_of_ant.resize(static_cast<std::size_t>(p_.ants));
   order_ants();
-  if (p_.iterations >= 1) {
-    team_.rounds(p_.ants, s.sol.thread_busy_s, [this](int slot, int worker) { ant(slot, worker); },
-                 [this] { return after_round(); });
+  s.ended = p_.iterations < 1;
+}
+
+bool Colony::advance(Team& team, int max_iterations, double until_s) {
+  RunState& s = run_;
+  team_ = &team;
+  if (!s.ended && p_.stop != nullptr && p_.stop->load()) {
+    s.sol.stop_reason = "stopped";
+    s.ended = true;
   }
-  s.sol.iterations = std::min(s.it, p_.iterations);
+  if (s.ended) return true;
+  s.slice_last_it = max_iterations > 0 ? s.it + max_iterations - 1 : 0;
+  s.slice_until_s = until_s;
+  team_->rounds(p_.ants, s.sol.thread_busy_s, [this](int slot, int worker) { ant(slot, worker); },
+                [this] { return after_round(); });
+  return s.ended;
+}
+
+Solution Colony::finish() {
+  RunState& s = run_;
+  if (!s.ended) s.sol.stop_reason = "stopped";
+  s.ended = true;
+  s.sol.iterations = s.completed;
   s.sol.order = to_order(s.best_route);
   s.sol.length = route_length(problem_, s.sol.order);
   s.sol.wall_s = clock_.seconds();
@@ -187,8 +205,14 @@ bool Colony::after_round() {
   // Pheromone update, on one thread, after the barrier.
   update_pheromone(*ib_route, ib_len);
 
+  run_.completed = run_.it;
   const double now = clock_.seconds();
   if (p_.on_iteration) p_.on_iteration(Progress{run_.it, now, run_.best_len});
+  run_.ended = true;
+  if (p_.stop != nullptr && p_.stop->load()) {
+    run_.sol.stop_reason = "stopped";
+    return false;
+  }
   if (p_.time_limit_s > 0.0 && now >= p_.time_limit_s) {
     run_.sol.stop_reason = "time limit";
     return false;
@@ -198,8 +222,13 @@ bool Colony::after_round() {
     return false;
   }
   if (run_.it == p_.iterations) return false;
+  run_.ended = false;
   ++run_.it;
   order_ants();
+  // The slice ends here, between iterations: the next advance() goes on
+  // with the iteration whose ants were just drawn, as one run would.
+  if (run_.slice_last_it > 0 && run_.it > run_.slice_last_it) return false;
+  if (run_.slice_until_s > 0.0 && now >= run_.slice_until_s) return false;
   return true;
 }
 

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <optional>
 
 #include "aco/error.h"
 #include "aco/solve.h"
@@ -124,57 +125,104 @@ Params resolve(const Params& in, std::size_t n) {
   return p;
 }
 
-Solution solve(const Problem& problem, const Params& params) {
+struct ColonyRun::State {
+  Params params;  // resolved
+  Problem problem;  // numbered along a Hilbert curve when input_index is not empty
+  std::vector<HoleIndex> input_index;  // by the colony's hole number: the hole's index in the problem given
+  std::optional<detail::Clock> started;
+  std::unique_ptr<detail::Colony> colony;
+  bool ended = false;
+  Solution solution;
+};
+
+ColonyRun::ColonyRun(const Problem& problem, const Params& params) : state_(std::make_unique<State>()) {
   params.validate();
-  const std::size_t n = problem.points.size();
   for (const Point2& pt : problem.points) {
     if (!std::isfinite(pt.x) || !std::isfinite(pt.y)) throw InputError("a point has a non-finite coordinate");
   }
-  Params p = resolve(params, n);
+  State& s = *state_;
+  const std::size_t n = problem.points.size();
+  s.params = resolve(params, n);
+  s.problem = problem;
   if (n <= 3) {
     // Nothing to search: try every order of up to 3 points.
-    Solution s;
-    s.algorithm = p.algorithm;
-    s.threads = p.threads;
-    s.ants = p.ants;
-    s.thread_busy_s.assign(static_cast<std::size_t>(p.threads), 0.0);
-    s.stop_reason = "trivial";
+    Solution& sol = s.solution;
+    sol.algorithm = s.params.algorithm;
+    sol.threads = s.params.threads;
+    sol.ants = s.params.ants;
+    sol.thread_busy_s.assign(static_cast<std::size_t>(s.params.threads), 0.0);
+    sol.stop_reason = "trivial";
     Order o(n);
     std::iota(o.begin(), o.end(), 0);
-    s.order = o;
-    s.length = route_length(problem, o);
+    sol.order = o;
+    sol.length = route_length(problem, o);
     while (std::next_permutation(o.begin(), o.end())) {
       const double len = route_length(problem, o);
-      if (len < s.length - 1e-12) {
-        s.length = len;
-        s.order = o;
+      if (len < sol.length - 1e-12) {
+        sol.length = len;
+        sol.order = o;
       }
     }
-    s.trace.push_back({0, 0.0, s.length});
-    return s;
+    sol.trace.push_back({0, 0.0, sol.length});
+    s.ended = true;
+    return;
   }
-  const detail::Clock started;
-  Problem numbered;
-  std::vector<HoleIndex> input_index;  // by the colony's hole number: the hole's index in problem.points
-  if (n >= kCurveOrderFrom) input_index = detail::hilbert_order(problem.points);
-  if (!input_index.empty() && detail::order_stretch(problem.points, input_index) <= kJumpyOrder) input_index.clear();
-  if (!input_index.empty()) {
-    numbered = problem;
-    for (std::size_t i = 0; i < n; ++i) numbered.points[i] = problem.points[input_index[i]];
-  }
-  // One team for the whole solve: the candidate lists' rows and ascent and
-  // the iterations all run on it, and a worker that starts late is never waited for.
-  Solution solution;
-  detail::Team::run(p.threads, [&](detail::Team& team) {
-    detail::Colony colony(input_index.empty() ? problem : numbered, p, team, started);
-    solution = colony.run();
-  });
-  // The same route through the same points: its length is unchanged.
-  if (!input_index.empty()) {
-    for (HoleIndex& h : solution.order) h = input_index[h];
-  }
-  return solution;
+  s.started.emplace();
+  if (n >= kCurveOrderFrom) s.input_index = detail::hilbert_order(problem.points);
+  if (!s.input_index.empty() && detail::order_stretch(problem.points, s.input_index) <= kJumpyOrder) s.input_index.clear();
+  for (std::size_t i = 0; i < s.input_index.size(); ++i) s.problem.points[i] = problem.points[s.input_index[i]];
 }
 
+ColonyRun::~ColonyRun() = default;
+ColonyRun::ColonyRun(ColonyRun&&) noexcept = default;
+ColonyRun& ColonyRun::operator=(ColonyRun&&) noexcept = default;
+
+bool ColonyRun::advance(int max_iterations, double max_seconds) {
+  State& s = *state_;
+  if (s.ended) return true;
+  // One team a slice: the candidate lists' rows and ascent (first slice) and
+  // the iterations all run on it, and a worker that starts late is never waited for.
+  detail::Team::run(s.params.threads, [&](detail::Team& team) {
+    if (!s.colony) {
+      s.colony = std::make_unique<detail::Colony>(s.problem, s.params, team, *s.started);
+      s.colony->start();
+    }
+    const double until = max_seconds > 0.0 ? s.started->seconds() + max_seconds : 0.0;
+    s.ended = s.colony->advance(team, max_iterations, until);
+  });
+  return s.ended;
+}
+
+bool ColonyRun::ended() const { return state_->ended; }
+
+const Params& ColonyRun::params() const { return state_->params; }
+
+Solution ColonyRun::finish() {
+  State& s = *state_;
+  if (s.colony == nullptr && !s.ended) {
+    // Not begun: the first route (nearest neighbour, improved), no iteration.
+    detail::Team::run(s.params.threads, [&](detail::Team& team) {
+      s.colony = std::make_unique<detail::Colony>(s.problem, s.params, team, *s.started);
+      s.colony->start();
+    });
+  }
+  if (s.colony != nullptr) {
+    s.solution = s.colony->finish();
+    s.colony.reset();
+  }
+  s.ended = true;
+  // The same route through the same points: its length is unchanged.
+  for (HoleIndex& h : s.solution.order) {
+    if (!s.input_index.empty()) h = s.input_index[h];
+  }
+  s.input_index.clear();
+  return std::move(s.solution);
+}
+
+Solution solve(const Problem& problem, const Params& params) {
+  ColonyRun run(problem, params);
+  run.advance();
+  return run.finish();
+}
 
 }  // namespace aco

@@ -4,6 +4,7 @@
  * resolve() for the values chosen. validate() throws aco::InputError naming the
  * first bad field.
  */
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <optional>
@@ -52,6 +53,9 @@ struct Params {
   int threads = 0;          // 0: all cores
   // Called after every iteration from the calling thread (progress lines); may be empty.
   std::function<void(const Progress&)> on_iteration;
+  // Set (from any thread) to end the run after the iteration under way, with
+  // the best route so far (stop_reason "stopped"); may be null.
+  const std::atomic<bool>* stop = nullptr;
 
   void validate() const;
 };
