@@ -203,6 +203,7 @@ class Colony {
   void start();
   bool advance(Team& team, int max_iterations, double until_s);
   Solution finish();
+  int completed() const { return run_.completed; }
 
  private:
   // What run() keeps from round to round (rounds.cpp sets it up).

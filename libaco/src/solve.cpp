@@ -195,6 +195,11 @@ bool ColonyRun::advance(int max_iterations, double max_seconds) {
 
 bool ColonyRun::ended() const { return state_->ended; }
 
+int ColonyRun::iterations() const {
+  const State& s = *state_;
+  return s.colony ? s.colony->completed() : s.solution.iterations;
+}
+
 const Params& ColonyRun::params() const { return state_->params; }
 
 Solution ColonyRun::finish() {

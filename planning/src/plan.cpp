@@ -1,6 +1,7 @@
 #include "planning/plan.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <map>
 
@@ -244,65 +245,127 @@ void split_worn_drills(const aco::HoleSet& holes, PlanResult& result, const Plan
   count_variants(holes, result, options);
 }
 
-void order_groups(const aco::HoleSet& holes, PlanResult& result, const PlanOptions& options) {
-  const Machine& m = options.machine;
-  const aco::Point2 finish = options.finish.value_or(m.start);
+struct GroupRouter::Group {
+  aco::Problem problem;
+  RouteUnits units;
+  aco::Order prefix;
+  aco::ColonyRun run;
+};
+
+GroupRouter::GroupRouter(const aco::HoleSet& holes, PlanResult& result, const PlanOptions& options)
+  : holes_(holes), result_(result), options_(options), at_(options.machine.start), at_nn_(options.machine.start) {
+  result_.solver = aco::resolve(options.solver, holes.size());
+}
+
+GroupRouter::~GroupRouter() = default;
+
+void GroupRouter::begin_group() {
+  const Machine& m = options_.machine;
+  ToolGroup& group = result_.groups[next_];
+  const bool last = next_ + 1 == result_.groups.size();
   // Each tool's holes as an open path from where the previous tool ended; the
   // last one ends at the start position, so the return home is optimised too.
-  const aco::Metric metric = options.objective == Objective::Time && !m.linear_rapids ? aco::Metric::Chebyshev
-                                                                                      : aco::Metric::Euclidean;
-  aco::Point2 at = m.start, at_nn = m.start;
-  result.solver = aco::resolve(options.solver, holes.size());
-  for (std::size_t g = 0; g < result.groups.size(); ++g) {
-    ToolGroup& group = result.groups[g];
-    const bool last = g + 1 == result.groups.size();
-    aco::Problem p;
-    p.metric = metric;
-    p.shape = aco::Shape::OpenPath;
-    p.start = at;
-    if (last && options.return_at_end) p.end = finish;
-    // The route's stops: a hole, or a chain (a drilled slot's holes) drilled
-    // together in its own order, stopping at the chain's centroid.
-    // Holes drilled first as they are (alignment pins); the colony routes the rest from the last of them.
-    const aco::Order prefix(group.input_order.begin(), group.input_order.begin() + static_cast<long>(group.fixed_prefix));
-    if (!prefix.empty()) p.start = holes[prefix.back()].center;
-    const RouteUnits units = route_units(holes, aco::Order(group.input_order.begin() + static_cast<long>(group.fixed_prefix),
-                                                           group.input_order.end()));
-    p.points = units.points;
-    // --time-limit bounds the whole run: each tool gets its share by hole count.
-    aco::Params params = options.solver;
-    if (params.time_limit_s > 0) {
-      params.time_limit_s = std::max(0.01, options.solver.time_limit_s * static_cast<double>(group.input_order.size()) /
-                                               static_cast<double>(holes.size()));
-    }
-    auto with_prefix = [&](aco::Order rest) {
-      rest.insert(rest.begin(), prefix.begin(), prefix.end());
-      return rest;
-    };
-    if (p.points.empty()) {
-      group.optimized = group.nearest_neighbor = prefix;
-    } else {
-      group.solution = aco::solve(p, params);
-      group.optimized = with_prefix(units.expand(group.solution.order));
-      aco::Problem pnn = p;
-      if (prefix.empty()) pnn.start = at_nn;
-      group.nearest_neighbor = with_prefix(units.expand(aco::nearest_neighbor(pnn)));
-    }
-    at = holes[group.optimized.back()].center;
-    at_nn = holes[group.nearest_neighbor.back()].center;
-    result.iterations += group.solution.iterations;
-    result.solver_wall_s += group.solution.wall_s;
-    if (result.thread_busy_s.size() < group.solution.thread_busy_s.size()) {
-      result.thread_busy_s.resize(group.solution.thread_busy_s.size(), 0.0);
-    }
-    for (std::size_t k = 0; k < group.solution.thread_busy_s.size(); ++k) {
-      result.thread_busy_s[k] += group.solution.thread_busy_s[k];
-    }
+  aco::Problem p;
+  p.metric = options_.objective == Objective::Time && !m.linear_rapids ? aco::Metric::Chebyshev : aco::Metric::Euclidean;
+  p.shape = aco::Shape::OpenPath;
+  p.start = at_;
+  if (last && options_.return_at_end) p.end = options_.finish.value_or(m.start);
+  // The route's stops: a hole, or a chain (a drilled slot's holes) drilled
+  // together in its own order, stopping at the chain's centroid.
+  // Holes drilled first as they are (alignment pins); the colony routes the rest from the last of them.
+  aco::Order prefix(group.input_order.begin(), group.input_order.begin() + static_cast<long>(group.fixed_prefix));
+  if (!prefix.empty()) p.start = holes_[prefix.back()].center;
+  RouteUnits units = route_units(holes_, aco::Order(group.input_order.begin() + static_cast<long>(group.fixed_prefix),
+                                                    group.input_order.end()));
+  p.points = units.points;
+  // --time-limit bounds the whole run: each tool gets its share by hole count.
+  aco::Params params = options_.solver;
+  if (params.time_limit_s > 0) {
+    params.time_limit_s = std::max(0.01, options_.solver.time_limit_s * static_cast<double>(group.input_order.size()) /
+                                             static_cast<double>(holes_.size()));
   }
-  count_variants(holes, result, options);
+  aco::ColonyRun run(p, params);
+  current_ = std::make_unique<Group>(Group{std::move(p), std::move(units), std::move(prefix), std::move(run)});
+}
+
+void GroupRouter::end_group() {
+  ToolGroup& group = result_.groups[next_];
+  Group& c = *current_;
+  auto with_prefix = [&](aco::Order rest) {
+    rest.insert(rest.begin(), c.prefix.begin(), c.prefix.end());
+    return rest;
+  };
+  if (c.problem.points.empty()) {
+    group.optimized = group.nearest_neighbor = c.prefix;
+  } else {
+    group.solution = c.run.finish();
+    group.optimized = with_prefix(c.units.expand(group.solution.order));
+    aco::Problem pnn = c.problem;
+    if (c.prefix.empty()) pnn.start = at_nn_;
+    group.nearest_neighbor = with_prefix(c.units.expand(aco::nearest_neighbor(pnn)));
+  }
+  at_ = holes_[group.optimized.back()].center;
+  at_nn_ = holes_[group.nearest_neighbor.back()].center;
+  result_.iterations += group.solution.iterations;
+  result_.solver_wall_s += group.solution.wall_s;
+  if (result_.thread_busy_s.size() < group.solution.thread_busy_s.size()) {
+    result_.thread_busy_s.resize(group.solution.thread_busy_s.size(), 0.0);
+  }
+  for (std::size_t k = 0; k < group.solution.thread_busy_s.size(); ++k) {
+    result_.thread_busy_s[k] += group.solution.thread_busy_s[k];
+  }
+  current_.reset();
+  ++next_;
+}
+
+bool GroupRouter::advance(int max_iterations, double max_seconds) {
+  const auto t0 = std::chrono::steady_clock::now();
+  auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
+  int left = max_iterations;
+  while (next_ < result_.groups.size()) {
+    if (!current_) begin_group();
+    aco::ColonyRun& run = current_->run;
+    if (!current_->problem.points.empty()) {
+      const int before = run.iterations();
+      const double time_left = max_seconds > 0.0 ? std::max(1e-9, max_seconds - seconds()) : 0.0;
+      if (!run.advance(max_iterations > 0 ? left : 0, time_left)) return false;
+      left -= run.iterations() - before;
+    }
+    end_group();
+    if (max_iterations > 0 && left <= 0 && next_ < result_.groups.size()) return false;
+    if (max_seconds > 0.0 && seconds() >= max_seconds && next_ < result_.groups.size()) return false;
+  }
+  if (!counted_) {
+    count_variants(holes_, result_, options_);
+    counted_ = true;
+  }
+  return true;
+}
+
+void GroupRouter::stop() {
+  if (stopped_) return;
+  stopped_ = true;
+  // The group under way keeps its best so far; those after it, their first route.
+  while (next_ < result_.groups.size()) {
+    if (!current_) begin_group();
+    end_group();
+  }
+  advance(0, 0.0);
+}
+
+std::size_t GroupRouter::group() const { return std::min(next_, result_.groups.size()); }
+void order_groups(const aco::HoleSet& holes, PlanResult& result, const PlanOptions& options) {
+  GroupRouter(holes, result, options).advance();
 }
 
 PlanResult plan_job(const aco::HoleSet& holes, const PlanOptions& options, const std::string& source) {
+  PlanResult result = group_holes(holes, options, source);
+  order_groups(holes, result, options);
+  settle_plan(holes, result, options);
+  return result;
+}
+
+PlanResult group_holes(const aco::HoleSet& holes, const PlanOptions& options, const std::string& source) {
   const Machine& m = options.machine;
   // A hole without a diameter would become a "0.000 MM DRILL": the user says
   // which drill (--default-diameter), or a tool table has a tool that takes it.
@@ -428,8 +491,10 @@ PlanResult plan_job(const aco::HoleSet& holes, const PlanOptions& options, const
     g.input_order.insert(g.input_order.begin(), options.first_holes.begin(), options.first_holes.end());
     g.fixed_prefix = options.first_holes.size();
   }
+  return result;
+}
 
-  order_groups(holes, result, options);
+void settle_plan(const aco::HoleSet& holes, PlanResult& result, const PlanOptions& options) {
   // Each tool's path is ordered from where the previous one ended, so on a
   // small job a baseline can come out shorter overall (ending one tool where
   // the next is best begun): then the better of them stands, never a worse
@@ -443,7 +508,6 @@ PlanResult plan_job(const aco::HoleSet& holes, const PlanOptions& options, const
     result.optimized = result.input_order;
   }
   split_worn_drills(holes, result, options);
-  return result;
 }
 
 std::vector<gcode::ToolPass> to_passes(const aco::HoleSet& holes, const PlanResult& plan, const Machine& machine) {

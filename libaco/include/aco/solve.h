@@ -42,6 +42,7 @@ class ColonyRun {
   // no bound) or `max_seconds` more (0: none) have passed (false).
   bool advance(int max_iterations = 0, double max_seconds = 0.0);
   bool ended() const;
+  int iterations() const;  // run so far
   // The best route so far; the run ends here if it had not (stop_reason
   // "stopped"). Call once.
   Solution finish();

@@ -6,6 +6,7 @@
  * calls these and writes.
  */
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -100,6 +101,43 @@ void split_worn_drills(const aco::HoleSet& holes, PlanResult& result, const Plan
 // from where the previous one ended, the last back to the finish; fills the
 // orders, the solutions and the travel and time of each variant.
 void order_groups(const aco::HoleSet& holes, PlanResult& result, const PlanOptions& options);
+
+// order_groups in slices (issue 64), for a front end that must have control
+// back between iterations: each group's colony run a slice at a time
+// (aco::ColonyRun). However sliced, the result is order_groups'. `holes`,
+// `result` and `options` must outlive the router.
+class GroupRouter {
+ public:
+  GroupRouter(const aco::HoleSet& holes, PlanResult& result, const PlanOptions& options);
+  ~GroupRouter();
+  // Routes until every group is ordered (true) or `max_iterations` more
+  // colony iterations (0: no bound) or `max_seconds` (0: none) have passed.
+  bool advance(int max_iterations = 0, double max_seconds = 0.0);
+  // Ends the routing now: the group under way keeps its best route so far,
+  // the groups after it their first (nearest neighbour, improved).
+  void stop();
+  // The group being routed (groups().size() once all are).
+  std::size_t group() const;
+
+ private:
+  struct Group;
+  void begin_group();
+  void end_group();
+  const aco::HoleSet& holes_;
+  PlanResult& result_;
+  const PlanOptions& options_;
+  aco::Point2 at_, at_nn_;  // where the optimized and the nearest-neighbour routes are
+  std::size_t next_ = 0;    // the group being routed
+  std::unique_ptr<Group> current_;
+  bool counted_ = false, stopped_ = false;
+};
+
+// plan_job in its three stages: the holes grouped by tool (the checks, the
+// tools, the groups' input orders), then order_groups (or a GroupRouter),
+// then settle_plan (the better of the baselines where one is, the worn
+// drills split).
+PlanResult group_holes(const aco::HoleSet& holes, const PlanOptions& options, const std::string& source);
+void settle_plan(const aco::HoleSet& holes, PlanResult& result, const PlanOptions& options);
 
 // The drilling passes of a plan, ready for gcode::write_program (with the
 // G98 retracts the machine's clamps need).
