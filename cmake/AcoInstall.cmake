@@ -1,7 +1,7 @@
 # Installation: the programs, the public headers and libraries, and a CMake
 # package, so that another project can
 #   find_package(acodrill 0.1 CONFIG REQUIRED)
-#   target_link_libraries(x PRIVATE aco::aco)
+#   target_link_libraries(x PRIVATE aco::aco)   # or aco::job: a whole job in one call
 # and the Debian package built from the same rules by CPack (scripts/package).
 include(CMakePackageConfigHelpers)
 
@@ -12,11 +12,11 @@ if(NOT WIN32)
   list(APPEND ACO_PROGRAMS acodrill-linuxcnc-filter)
 endif()
 install(TARGETS ${ACO_PROGRAMS} RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
-install(TARGETS aco_geometry aco aco_dxf aco_gcode aco_formats aco_planning
+install(TARGETS aco_geometry aco aco_dxf aco_gcode aco_formats aco_planning aco_job
         EXPORT acodrillTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
-foreach(dir libaco dxf gcode formats planning)
+foreach(dir libaco dxf gcode formats planning job)
   install(DIRECTORY ${PROJECT_SOURCE_DIR}/${dir}/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 endforeach()
 install(EXPORT acodrillTargets NAMESPACE aco:: DESTINATION ${ACO_CMAKE_DIR})

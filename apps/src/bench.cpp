@@ -14,6 +14,7 @@
 #include "app/files.h"
 #include "app/inputs.h"
 #include "gcode/program.h"
+#include "job/settings.h"
 
 namespace app {
 
@@ -104,14 +105,10 @@ std::string csv_field(const std::string& v) {
 }  // namespace
 
 aco::Params solver_params(const std::string& algorithm, const std::string& local_search) {
-  aco::Params p;
-  auto alg = aco::algorithm_from_string(algorithm);
-  if (!alg) throw UserError("--algorithm must be one of focused, acs, mmas, as (got \"" + algorithm + "\")");
-  auto ls = aco::local_search_from_string(local_search);
-  if (!ls) throw UserError("--local-search must be one of none, 2opt, 2opt+oropt, 3opt, 5opt, auto (got \"" + local_search + "\")");
-  p.algorithm = *alg;
-  p.local_search = *ls;
-  return p;
+  job::SolverSettings s;
+  s.algorithm = algorithm;
+  s.local_search = local_search;
+  return job::solver_params(s);
 }
 
 std::map<std::string, double> known_optima() {

@@ -14,3 +14,4 @@ out=$("$work/build/consumer")
 echo "$out"
 [ "$(echo "$out" | head -n 1)" = "holes 10 length 10.000" ]
 echo "$out" | grep -q "^tools 1 time "
+echo "$out" | grep -q "^job holes 10 tools 1 program "

@@ -10,7 +10,7 @@
 #include "planning/owned_tools.h"
 #include "planning/tools.h"
 
-namespace app {
+namespace job {
 
 // One line per fault, in a stable order; empty when the program is right.
 // Positions match within the program's printed precision; where the program
@@ -42,4 +42,4 @@ std::vector<std::string> self_check(const std::string& program_text, const aco::
                                     const planning::Tooling& tooling);
 std::vector<std::string> self_check(const std::string& program_text, const gcode::DrillingProgram& input);
 
-}  // namespace app
+}  // namespace job

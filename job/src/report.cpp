@@ -1,10 +1,10 @@
-#include "app/report.h"
+#include "job/report.h"
 
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-namespace app {
+namespace job {
 
 // The planning model's values (planning/) are what these pages and reports show.
 using namespace planning;
@@ -158,4 +158,4 @@ std::string holes_csv(const aco::HoleSet& holes) {
   return out;
 }
 
-}  // namespace app
+}  // namespace job

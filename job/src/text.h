@@ -3,7 +3,7 @@
 #include <string>
 #include <string_view>
 
-namespace app {
+namespace job {
 
 // Text safe inside XML/HTML content and attribute values; control characters become blanks.
 inline std::string xml_escape(std::string_view s) {
@@ -21,4 +21,4 @@ inline std::string xml_escape(std::string_view s) {
   return out;
 }
 
-}  // namespace app
+}  // namespace job

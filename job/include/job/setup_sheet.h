@@ -6,11 +6,11 @@
 #include <string>
 
 #include "planning/plan.h"
-#include "app/report.h"
+#include "job/report.h"
 
-namespace app {
+namespace job {
 
 std::string setup_sheet_html(const aco::HoleSet& holes, const planning::PlanResult& plan, const planning::PlanOptions& options,
                              const ReportContext& context);
 
-}  // namespace app
+}  // namespace job

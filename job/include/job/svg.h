@@ -5,7 +5,7 @@
 
 #include "planning/plan.h"
 
-namespace app {
+namespace job {
 
 // The optimized route, in program coordinates, with program zero marked.
 std::string route_svg(const aco::HoleSet& holes, const planning::PlanResult& plan, const planning::PlanOptions& options,
@@ -14,4 +14,4 @@ std::string route_svg(const aco::HoleSet& holes, const planning::PlanResult& pla
 std::string compare_svg(const aco::HoleSet& holes, const planning::PlanResult& plan, const planning::PlanOptions& options,
                         const planning::Placement& placement, const std::string& title);
 
-}  // namespace app
+}  // namespace job

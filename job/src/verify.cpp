@@ -1,4 +1,4 @@
-#include "app/verify.h"
+#include "job/verify.h"
 
 #include <cmath>
 #include <algorithm>
@@ -7,7 +7,7 @@
 
 #include "gcode/program.h"
 
-namespace app {
+namespace job {
 
 namespace {
 
@@ -207,4 +207,4 @@ std::vector<std::string> self_check(const std::string& program_text, const gcode
   }
 }
 
-}  // namespace app
+}  // namespace job

@@ -1,4 +1,4 @@
-#include "app/svg.h"
+#include "job/svg.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,7 +8,7 @@
 #include "gcode/program.h"
 #include "text.h"
 
-namespace app {
+namespace job {
 
 // The planning model's values (planning/) are what these pages and reports show.
 using namespace planning;
@@ -188,4 +188,4 @@ std::string compare_svg(const aco::HoleSet& holes, const PlanResult& plan, const
   return document(holes, plan, options, placement, title, true);
 }
 
-}  // namespace app
+}  // namespace job

@@ -1,12 +1,12 @@
-#include "app/setup_sheet.h"
+#include "job/setup_sheet.h"
 
 #include <sstream>
 
-#include "app/svg.h"
+#include "job/svg.h"
 #include "gcode/program.h"
 #include "text.h"
 
-namespace app {
+namespace job {
 
 // The planning model's values (planning/) are what these pages and reports show.
 using namespace planning;
@@ -165,4 +165,4 @@ std::string setup_sheet_html(const aco::HoleSet& holes, const PlanResult& plan, 
   return h.str();
 }
 
-}  // namespace app
+}  // namespace job

@@ -9,7 +9,7 @@
 #include "planning/plan.h"
 #include "formats/holes.h"
 
-namespace app {
+namespace job {
 
 // What the outputs say about the job besides the plan itself.
 struct ReportContext {
@@ -39,4 +39,4 @@ std::string convergence_csv(const planning::PlanResult& plan);
 // header x_mm,y_mm,diameter_mm,layer; 6 decimals; a layer with a comma or quote quoted.
 std::string holes_csv(const aco::HoleSet& holes);
 
-}  // namespace app
+}  // namespace job
