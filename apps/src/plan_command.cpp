@@ -18,8 +18,6 @@ namespace cli {
 
 namespace {
 
-std::string shown(const std::string& path) { return path == "-" ? "<stdin>" : path; }
-
 // The summary on stderr: the inputs, the tools, travel and time of each order, where the files went.
 void print_summary(const PlanArgs& a, const job::Result& r) {
   const planning::PlanResult& plan = r.plan;
