@@ -80,3 +80,29 @@ build() {
   # shellcheck disable=SC2086
   cmake --build "$BUILD" -j "$jobs" ${BUILD_TARGETS:+--target $BUILD_TARGETS}
 }
+
+# tinyxml2's sources from Debian's source package (Debian builds it for
+# Linux only), for the Windows and browser builds: fetched once into
+# DIR/src through a private apt source list (the machine's own apt
+# configuration is left as it is). Prints the source folder.
+fetch_tinyxml2_source() {
+  local deps="$1"
+  local src
+  src=$(find "$deps/src" -maxdepth 1 -type d -name 'tinyxml2*' 2>/dev/null | head -n 1)
+  if [ -z "$src" ]; then
+    local apt_src=(-o Dir::Etc::SourceList=/dev/null -o Dir::Etc::SourceParts="$deps/apt/etc" -o Dir::State::Lists="$deps/apt/lists")
+    mkdir -p "$deps/apt/etc" "$deps/apt/lists/partial" "$deps/src"
+    cat > "$deps/apt/etc/debian-src.sources" <<SOURCES
+Types: deb-src
+URIs: http://deb.debian.org/debian
+Suites: bookworm
+Components: main
+Signed-By: /usr/share/keyrings/debian-archive-keyring.gpg
+SOURCES
+    apt-get "${apt_src[@]}" -qq update >&2
+    (cd "$deps/src" && apt-get "${apt_src[@]}" -qq source --download-only tinyxml2 2>/dev/null >&2)
+    tar -xf "$deps"/src/tinyxml2_*.orig.tar.* -C "$deps/src"
+    src=$(find "$deps/src" -maxdepth 1 -type d -name 'tinyxml2*' | head -n 1)
+  fi
+  echo "$src"
+}

@@ -5,6 +5,8 @@
 #include <cstring>
 #include <string>
 
+#include "aco/charconv.h"
+
 namespace dxf {
 
 std::string_view trim(std::string_view s) {
@@ -54,7 +56,7 @@ bool TagReader::next(Tag& tag) {
     std::string_view code_text = trim(code_line);
     if (code_text.empty() && pos_ >= text_.size()) return false;  // trailing blank line
     int code = 0;
-    auto [ptr, ec] = std::from_chars(code_text.data(), code_text.data() + code_text.size(), code);
+    auto [ptr, ec] = aco::from_chars(code_text.data(), code_text.data() + code_text.size(), code);
     if (ec != std::errc() || ptr != code_text.data() + code_text.size() || code < 0) {
       throw ReadError(code_line_no, "invalid group code \"" + printable(code_text) + "\"");
     }
@@ -77,7 +79,7 @@ double parse_double(const Tag& tag) {
   const char* first = s.data();
   const char* last = s.data() + s.size();
   if (first != last && *first == '+') ++first;
-  auto [ptr, ec] = std::from_chars(first, last, v);
+  auto [ptr, ec] = aco::from_chars(first, last, v);
   // Name the value's own line (the one after its group code): that is where the bad text is.
   if (ec != std::errc() || ptr != last || s.empty()) {
     throw ReadError(tag.line + 1, "group code " + std::to_string(tag.code) + ": \"" + printable(s) +
@@ -93,7 +95,7 @@ double parse_double(const Tag& tag) {
 int parse_int(const Tag& tag, std::vector<Diagnostic>& diagnostics) {
   std::string_view s = trim(tag.value);
   int v = 0;
-  auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+  auto [ptr, ec] = aco::from_chars(s.data(), s.data() + s.size(), v);
   if (ec == std::errc() && ptr == s.data() + s.size() && !s.empty()) return v;
   double d = parse_double(tag);
   if (d != std::floor(d) || std::fabs(d) > 2147483647.0) {
@@ -190,7 +192,7 @@ std::string binary_to_text(std::string_view data) {
         std::uint64_t bits = in.take(8);
         double v = 0.0;
         std::memcpy(&v, &bits, sizeof v);
-        auto res = std::to_chars(buf, buf + sizeof buf, v);  // shortest form that reads back exactly
+        auto res = aco::to_chars(buf, buf + sizeof buf, v);  // shortest form that reads back exactly
         out.append(buf, res.ptr);
         break;
       }

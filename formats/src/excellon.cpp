@@ -17,6 +17,7 @@
 #include <map>
 #include <optional>
 
+#include "aco/charconv.h"
 #include "aco/hole_set.h"
 #include "text.h"
 
@@ -67,7 +68,7 @@ class Reader {
   double plain_number(std::string_view s) const {
     double v = 0;
     if (!s.empty() && s.front() == '+') s.remove_prefix(1);
-    auto r = std::from_chars(s.data(), s.data() + s.size(), v);
+    auto r = aco::from_chars(s.data(), s.data() + s.size(), v);
     if (s.empty() || r.ec != std::errc() || r.ptr != s.data() + s.size() || !std::isfinite(v)) {
       fail("\"" + std::string(s) + "\" is not a number");
     }
@@ -153,7 +154,7 @@ void Reader::define_tool(std::string_view s) {
   std::size_t i = 1;
   std::string_view num = number_at(s, i);
   int number = 0;
-  auto r = std::from_chars(num.data(), num.data() + num.size(), number);
+  auto r = aco::from_chars(num.data(), num.data() + num.size(), number);
   if (num.empty() || r.ec != std::errc() || r.ptr != num.data() + num.size() || number < 0) {
     fail("bad tool number in \"" + std::string(s) + "\"");
   }
@@ -239,12 +240,12 @@ bool Reader::units_and_zeros(std::string_view s) {
 void Reader::allegro_tool_comment(std::string_view s) {
   if (s.size() < 4 || s[1] != 'T' || s.find("Holesize") == std::string_view::npos) return;
   int number = 0;
-  auto r = std::from_chars(s.data() + 2, s.data() + s.size(), number);
+  auto r = aco::from_chars(s.data() + 2, s.data() + s.size(), number);
   const std::size_t eq = s.find('=');
   if (r.ec != std::errc() || eq == std::string_view::npos) return;
   std::string_view rest = trim(s.substr(eq + 1));
   double size = 0;
-  auto r2 = std::from_chars(rest.data(), rest.data() + rest.size(), size);
+  auto r2 = aco::from_chars(rest.data(), rest.data() + rest.size(), size);
   if (r2.ec != std::errc() || !(size > 0)) return;
   double mm = 0;
   if (s.find(" MILS") != std::string_view::npos) mm = size * kInch / 1000.0;
@@ -262,10 +263,10 @@ void Reader::apply_nc_param(std::string_view text) {
     if (space == std::string_view::npos) return true;
     const std::string_view key = l.substr(0, space), value = trim(l.substr(space));
     int n = 0;
-    if (key == "INTEGER-PLACES" && std::from_chars(value.data(), value.data() + value.size(), n).ec == std::errc() && n > 0 && n < 8) {
+    if (key == "INTEGER-PLACES" && aco::from_chars(value.data(), value.data() + value.size(), n).ec == std::errc() && n > 0 && n < 8) {
       fmt_.int_digits = n;
       fmt_.digits_stated = true;
-    } else if (key == "DECIMAL-PLACES" && std::from_chars(value.data(), value.data() + value.size(), n).ec == std::errc() && n >= 0 && n < 8) {
+    } else if (key == "DECIMAL-PLACES" && aco::from_chars(value.data(), value.data() + value.size(), n).ec == std::errc() && n >= 0 && n < 8) {
       fmt_.dec_digits = n;
     } else if (key == "OUTPUT-UNITS") {
       fmt_.metric = value == "METRIC";

@@ -15,6 +15,7 @@
 #include <map>
 #include <optional>
 
+#include "aco/charconv.h"
 #include "formats/readers.h"
 #include "text.h"
 
@@ -105,7 +106,7 @@ double GerberReader::number(std::string_view s) const {
 
 int GerberReader::code(std::string_view s) const {
   int v = 0;
-  auto r = std::from_chars(s.data(), s.data() + s.size(), v);
+  auto r = aco::from_chars(s.data(), s.data() + s.size(), v);
   if (s.empty() || r.ec != std::errc() || r.ptr != s.data() + s.size() || v < 0 || v > 1'000'000'000) {
     fail("\"" + std::string(s.substr(0, 20)) + "\" is not a code or count");
   }

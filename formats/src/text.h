@@ -7,6 +7,7 @@
 #include <string>
 #include <string_view>
 
+#include "aco/charconv.h"
 #include "formats/error.h"
 #include "formats/holes.h"
 
@@ -24,7 +25,7 @@ inline bool parse_number(std::string_view s, double& out) {
   s = trim(s);
   if (!s.empty() && s.front() == '+') s.remove_prefix(1);
   if (s.empty()) return false;
-  auto r = std::from_chars(s.data(), s.data() + s.size(), out);
+  auto r = aco::from_chars(s.data(), s.data() + s.size(), out);
   return r.ec == std::errc() && r.ptr == s.data() + s.size() && std::isfinite(out);
 }
 

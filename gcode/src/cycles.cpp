@@ -6,13 +6,14 @@
 #include <charconv>
 #include <cmath>
 
+#include "aco/charconv.h"
 #include "gcode/drilling.h"
 
 namespace gcode {
 
 double dwell_seconds(std::string_view p, bool canned_cycle) {
   double v = 0.0;
-  auto r = std::from_chars(p.data(), p.data() + p.size(), v);
+  auto r = aco::from_chars(p.data(), p.data() + p.size(), v);
   if (r.ec != std::errc() || !std::isfinite(v) || v < 0) return 0.0;
   if (p.find('.') != std::string_view::npos) return v;
   return canned_cycle || v >= 100.0 ? v / 1000.0 : v;

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <limits>
 
+#include "aco/charconv.h"
 #include "block_text.h"
 #include "gcode/drilling.h"
 
@@ -92,12 +93,12 @@ void parse_tool_comment(const std::string& raw, int selected_tool, bool inch, st
   std::size_t i = comment.find_first_not_of(' ');
   if (i != std::string::npos && comment[i] == 'T') {
     int tool = 0;
-    auto r = std::from_chars(comment.data() + i + 1, comment.data() + comment.size(), tool);
+    auto r = aco::from_chars(comment.data() + i + 1, comment.data() + comment.size(), tool);
     if (r.ec != std::errc()) return;
     std::size_t d = comment.find("D=", static_cast<std::size_t>(r.ptr - comment.data()));
     if (d == std::string::npos) return;
     double value = 0.0;
-    auto r2 = std::from_chars(comment.data() + d + 2, comment.data() + comment.size(), value);
+    auto r2 = aco::from_chars(comment.data() + d + 2, comment.data() + comment.size(), value);
     if (r2.ec != std::errc() || !(value > 0)) return;
     std::string rest(r2.ptr, comment.data() + comment.size());
     const bool mm = rest.rfind(" MM", 0) == 0, in = rest.rfind(" IN", 0) == 0;
@@ -108,7 +109,7 @@ void parse_tool_comment(const std::string& raw, int selected_tool, bool inch, st
   if (size != std::string::npos && selected_tool > 0) {
     double value = 0.0;
     const char* begin = comment.data() + size + 11;
-    auto r = std::from_chars(begin, comment.data() + comment.size(), value);
+    auto r = aco::from_chars(begin, comment.data() + comment.size(), value);
     if (r.ec != std::errc() || !(value > 0)) return;
     std::string unit(r.ptr, comment.data() + comment.size());
     if (unit.rfind("MM", 0) == 0) diameters[selected_tool] = value;
@@ -141,7 +142,7 @@ std::vector<Word> parse_words(std::string_view code, std::uint32_t lineno) {
       throw ProgramError(lineno, std::string("word ") + letter + " has no number");
     }
     double v = 0.0;
-    auto r = std::from_chars(num.data(), num.data() + num.size(), v);
+    auto r = aco::from_chars(num.data(), num.data() + num.size(), v);
     if (r.ec != std::errc() || r.ptr != num.data() + num.size() || !std::isfinite(v)) {
       throw ProgramError(lineno, std::string("word ") + letter + " has a bad number \"" + num + "\"");
     }
@@ -275,7 +276,7 @@ class Reader {
     std::size_t i = 1;
     while (i < line.size() && std::isdigit(static_cast<unsigned char>(line[i]))) ++i;
     int code = -1;
-    std::from_chars(line.data() + 1, line.data() + i, code);
+    aco::from_chars(line.data() + 1, line.data() + i, code);
     if (code != 0 && code != 1 && code != 117 && code != 118) return std::nullopt;
     if (i >= line.size() || !is_blank(line[i])) return std::nullopt;
     std::string_view rest = trim(line.substr(i));
@@ -297,7 +298,7 @@ class Reader {
     for (std::size_t i = 0; i + 1 < m.size(); ++i) {
       if (m[i] != 'T' || (i > 0 && std::isalnum(static_cast<unsigned char>(m[i - 1])))) continue;
       int tool = 0;
-      auto r = std::from_chars(m.data() + i + 1, m.data() + m.size(), tool);
+      auto r = aco::from_chars(m.data() + i + 1, m.data() + m.size(), tool);
       if (r.ec != std::errc() || tool <= 0 || (r.ptr < m.data() + m.size() && std::isalnum(static_cast<unsigned char>(*r.ptr)))) {
         continue;
       }

@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "aco/charconv.h"
 #include "gcode/drilling.h"
 #include "gcode/program.h"
 #include "hobby_writer.h"
@@ -223,7 +224,7 @@ std::optional<Cycle> cycle_from_string(const std::string& name) {
 
 std::string format_number(double value, int decimals) {
   char buf[64];
-  auto res = std::to_chars(buf, buf + sizeof buf, value, std::chars_format::fixed, decimals);
+  auto res = aco::to_chars(buf, buf + sizeof buf, value, std::chars_format::fixed, decimals);
   if (res.ec != std::errc()) return "0.";
   std::string s(buf, res.ptr);
   if (decimals == 0) s += '.';

@@ -355,6 +355,16 @@ Result PlanJob::finish() {
   return std::move(j.r);
 }
 
+const Result& PlanJob::state() const { return impl_->r; }
+
+std::vector<aco::Order> PlanJob::routes_so_far() const {
+  const Impl& j = *impl_;
+  if (j.router) return j.router->orders_so_far();
+  std::vector<aco::Order> out;
+  for (const planning::ToolGroup& g : j.r.plan.groups) out.push_back(g.optimized.empty() ? g.input_order : g.optimized);
+  return out;
+}
+
 Result plan(std::vector<InputFile> inputs, const PlanSettings& settings, ProgressFn progress, const std::atomic<bool>* stop) {
   PlanJob job(std::move(inputs), settings, std::move(progress), stop);
   job.advance();

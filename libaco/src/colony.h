@@ -204,6 +204,7 @@ class Colony {
   bool advance(Team& team, int max_iterations, double until_s);
   Solution finish();
   int completed() const { return run_.completed; }
+  Order best_order() const { return to_order(run_.best_route); }
 
  private:
   // What run() keeps from round to round (rounds.cpp sets it up).

@@ -18,7 +18,7 @@
 //
 // Exceptions may not leave an OpenMP region: the first one (by slot, for
 // determinism) is kept and rethrown once the team has stopped.
-#include <omp.h>
+#include "omp_compat.h"
 
 #include <algorithm>
 #include <atomic>

@@ -1,7 +1,7 @@
 // The solver's entry points: resolve() fills in each algorithm's defaults
 // for the problem's size, solve() numbers large inputs along a Hilbert curve
 // when their order jumps about the plate and runs the colony on one team.
-#include <omp.h>
+#include "omp_compat.h"
 
 #include <algorithm>
 #include <cmath>
@@ -198,6 +198,15 @@ bool ColonyRun::ended() const { return state_->ended; }
 int ColonyRun::iterations() const {
   const State& s = *state_;
   return s.colony ? s.colony->completed() : s.solution.iterations;
+}
+
+Order ColonyRun::best_order() const {
+  const State& s = *state_;
+  Order o = s.colony ? s.colony->best_order() : s.solution.order;
+  if (s.colony && !s.input_index.empty()) {
+    for (HoleIndex& h : o) h = s.input_index[h];
+  }
+  return o;
 }
 
 const Params& ColonyRun::params() const { return state_->params; }

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "aco/charconv.h"
 #include "gcode/program.h"
 #include "json.h"
 
@@ -18,7 +19,7 @@ std::string fmt3(double v) { return gcode::format_number(v, 3); }
 double number_of(const std::string& text, const std::string& item, const std::string& where) {
   double v = 0.0;
   const char* end = text.data() + text.size();
-  auto r = std::from_chars(text.data(), end, v);
+  auto r = aco::from_chars(text.data(), end, v);
   if (text.empty() || r.ec != std::errc() || r.ptr != end || !std::isfinite(v)) {
     throw UserError(where + ": \"" + item + "\" is not DIA[:-MINUS:+PLUS] in mm (e.g. 0.8 or 0.8:-0.05:+0.1)");
   }

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "aco/charconv.h"
 #include "json.h"
 
 namespace planning {
@@ -117,10 +118,10 @@ std::optional<aco::Point2> stated_zero(std::string_view program) {
   // Locale-free, as the emitter wrote it: "<x> Y<y> MM".
   std::string_view rest = program.substr(at + kTag.size(), 80);
   double x = 0, y = 0;
-  auto rx = std::from_chars(rest.data(), rest.data() + rest.size(), x);
+  auto rx = aco::from_chars(rest.data(), rest.data() + rest.size(), x);
   if (rx.ec != std::errc() || rest.substr(static_cast<std::size_t>(rx.ptr - rest.data()), 2) != " Y") return std::nullopt;
   rest.remove_prefix(static_cast<std::size_t>(rx.ptr - rest.data()) + 2);
-  auto ry = std::from_chars(rest.data(), rest.data() + rest.size(), y);
+  auto ry = aco::from_chars(rest.data(), rest.data() + rest.size(), y);
   if (ry.ec != std::errc() || rest.substr(static_cast<std::size_t>(ry.ptr - rest.data()), 3) != " MM") return std::nullopt;
   if (!std::isfinite(x) || !std::isfinite(y)) return std::nullopt;
   return aco::Point2{x, y};
@@ -210,7 +211,7 @@ std::optional<MirrorAxis> mirror_axis_from_string(const std::string& text) {
   if (text.size() < 3 || text[1] != '=' || (text[0] != 'x' && text[0] != 'y' && text[0] != 'X' && text[0] != 'Y')) return std::nullopt;
   const std::string number = text.substr(2);
   double v = 0.0;
-  auto r = std::from_chars(number.data(), number.data() + number.size(), v);
+  auto r = aco::from_chars(number.data(), number.data() + number.size(), v);
   if (r.ec != std::errc() || r.ptr != number.data() + number.size() || !std::isfinite(v) || std::fabs(v) > 1e9) return std::nullopt;
   return MirrorAxis{text[0] == 'x' || text[0] == 'X', v};
 }

@@ -353,6 +353,23 @@ void GroupRouter::stop() {
   advance(0, 0.0);
 }
 
+std::vector<aco::Order> GroupRouter::orders_so_far() const {
+  std::vector<aco::Order> out;
+  for (std::size_t g = 0; g < result_.groups.size(); ++g) {
+    const ToolGroup& group = result_.groups[g];
+    if (g < next_) {
+      out.push_back(group.optimized);
+    } else if (g == next_ && current_ && !current_->problem.points.empty() && current_->run.iterations() > 0) {
+      aco::Order o = current_->units.expand(current_->run.best_order());
+      o.insert(o.begin(), current_->prefix.begin(), current_->prefix.end());
+      out.push_back(std::move(o));
+    } else {
+      out.push_back(group.input_order);
+    }
+  }
+  return out;
+}
+
 std::size_t GroupRouter::group() const { return std::min(next_, result_.groups.size()); }
 void order_groups(const aco::HoleSet& holes, PlanResult& result, const PlanOptions& options) {
   GroupRouter(holes, result, options).advance();

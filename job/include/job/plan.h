@@ -101,6 +101,14 @@ class PlanJob {
   bool advance(int iterations = 0, double seconds = 0.0);
   // The outputs; before the routing is done it ends there (stopped). Call once.
   Result finish();
+  // What is known before finish(): from construction the holes (in program
+  // coordinates), the inputs as read, program zero, the tools and their
+  // holes (plan.groups' input orders; a G-code program input's holes are
+  // inputs.holes.holes until it is reordered), or the error.
+  const Result& state() const;
+  // Each tool's route as it stands, before finish(), to draw while the colony works (holes'
+  // indices; a tool not yet routed in its input order).
+  std::vector<aco::Order> routes_so_far() const;
 
  private:
   struct Impl;

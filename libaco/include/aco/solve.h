@@ -43,6 +43,8 @@ class ColonyRun {
   bool advance(int max_iterations = 0, double max_seconds = 0.0);
   bool ended() const;
   int iterations() const;  // run so far
+  // The best route so far (empty before the first advance()), to draw while it runs.
+  Order best_order() const;
   // The best route so far; the run ends here if it had not (stop_reason
   // "stopped"). Call once.
   Solution finish();

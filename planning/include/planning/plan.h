@@ -118,6 +118,9 @@ class GroupRouter {
   void stop();
   // The group being routed (groups().size() once all are).
   std::size_t group() const;
+  // Each group's order as it stands: routed, the best so far, or (not yet
+  // begun) its input order; to draw the route while it improves.
+  std::vector<aco::Order> orders_so_far() const;
 
  private:
   struct Group;
