@@ -1,0 +1,428 @@
+// The page (issue 65): the form, the files, the pictures and the chart on
+// the main thread; the job in a worker (worker.js, started from a Blob URL:
+// a file:// page may not start one from a file). Every setting means what
+// the `acodrill plan` option of that name means.
+'use strict';
+(() => {
+  const $ = (id) => document.getElementById(id);
+
+  // The settings: [key, label, kind, choices or placeholder, help, advanced].
+  const SETTINGS = [
+    ['machine', 'Machine', 'select', [['', 'default (vf2; router for GRBL and Marlin)'], ['vf2', 'vf2: HAAS VF-2 vertical mill'], ['router', 'router: desktop CNC router on GRBL'], ['pcb-drill', 'pcb-drill: PCB drilling machine'], ['pcb-proto', 'pcb-proto: PCB prototyping mill']],
+      'Rapids, accelerations, tool changes and travel of the machine: they set the time estimate, the generated tools\u2019 speeds and the dialect.'],
+    ['dialect', 'Dialect', 'select', [['', 'the machine\u2019s'], ['haas', 'HAAS'], ['fanuc', 'Fanuc'], ['linuxcnc', 'LinuxCNC'], ['grbl', 'GRBL, grblHAL, FluidNC'], ['marlin', 'Marlin']],
+      'HAAS, Fanuc and LinuxCNC drill with canned cycles (G81/G83) and change tools with M6; GRBL and Marlin get every hole as G0/G1 moves and a pause naming each drill.'],
+    ['units', 'Units', 'select', [['mm', 'mm'], ['inch', 'inch']], 'Units of the program (a G-code program input keeps its own).'],
+    ['origin', 'Origin', 'select', [['lower-left', 'lower left of the holes'], ['center', 'centre of the holes'], ['upper-left', 'upper left of the holes'], ['drawing', 'the drawing\u2019s own zero']],
+      'Program zero (X0 Y0): where the machinist sets the work offset. Also X,Y in mm with the command line.'],
+    ['material', 'Material', 'select', [['', 'steel; PCB for drill files'], ['steel', 'steel'], ['aluminium', 'aluminium'], ['pcb', 'PCB']], 'Feeds and speeds of the generated tools.'],
+    ['thickness', 'Thickness', 'number', 'mm', 'Part thickness in mm (default 6.35, or 1.6 for PCB): how deep each hole is drilled.'],
+    ['drills', 'Drills owned', 'text', 'e.g. 0.6,0.8,1.0,1.2', 'The drills you own, mm, comma-separated (DIA or DIA:-MINUS:+PLUS). Each hole goes to a drill that fits it. Empty: one drill per diameter.'],
+    ['end_mill', 'End mill', 'number', 'mm', 'Diameter of an end mill for the holes no owned drill fits: each is milled by a helix to its size.'],
+    ['probe_plate', 'Touch plate', 'number', 'mm', 'Thickness of a touch plate: after each tool change GRBL, Marlin and LinuxCNC programs probe Z on it.'],
+    ['side', 'Side', 'select', [['front', 'front'], ['back', 'back (mirrored)']], 'Drill the board from its back: the holes mirrored about the vertical line through their centre.'],
+    ['alignment_pins', 'Alignment pins', 'number', 'mm', 'Two pin holes of this diameter on the mirror line, drilled first, to register the board when it is turned over.'],
+    ['panel', 'Panel', 'text', 'e.g. 3x2', 'Drill copies of the board as one job: COLSxROWS, with the pitch.'],
+    ['pitch', 'Pitch', 'text', 'e.g. 60,40', 'DX,DY in mm between panel copies.'],
+    ['time_limit', 'Time limit', 'number', 'seconds', 'Stop the colony after this many seconds (empty: it stops by itself).'],
+    ['iterations', 'Iterations', 'number', 'default', 'Colony iterations per tool (empty: until the time limit, or the size\u2019s default). With a fixed count and seed, the program is the one acodrill plan writes.'],
+    ['seed', 'Seed', 'number', '1', 'Random seed: the same files, settings and seed give the same program.'],
+    ['algorithm', 'Algorithm', 'select', [['focused', 'focused (default)'], ['acs', 'ACS'], ['mmas', 'MAX-MIN'], ['as', 'Ant System (the thesis)']], 'The colony\u2019s algorithm.', true],
+    ['alpha', 'Alpha', 'number', '1', 'Pheromone weight.', true],
+    ['beta', 'Beta', 'number', 'default', 'Distance weight (Ant System 4, the others 2).', true],
+    ['ants', 'Ants', 'number', 'default', 'Ants per iteration (empty = the default).', true],
+  ];
+  const STORE = 'acodrill.settings.v1';
+  const EXT = { haas: 'nc', fanuc: 'nc', linuxcnc: 'ngc', grbl: 'nc', marlin: 'gcode' };
+  const COLOURS = ['#1f77b4', '#d62728', '#2ca02c', '#9467bd', '#ff7f0e', '#17becf', '#8c564b', '#e377c2', '#7f7f7f', '#bcbd22'];
+
+  function buildForm() {
+    for (const [key, label, kind, choices, help, advanced] of SETTINGS) {
+      const box = document.createElement('div');
+      box.className = 'setting';
+      const id = 'set-' + key;
+      const l = document.createElement('label');
+      l.htmlFor = id;
+      l.textContent = label;
+      let input;
+      if (kind === 'select') {
+        input = document.createElement('select');
+        for (const [value, text] of choices) {
+          const o = document.createElement('option');
+          o.value = value;
+          o.textContent = text;
+          input.appendChild(o);
+        }
+      } else {
+        input = document.createElement('input');
+        input.type = kind === 'number' ? 'number' : 'text';
+        if (kind === 'number') input.step = 'any';
+        input.placeholder = choices;
+      }
+      input.id = id;
+      input.name = key;
+      const h = document.createElement('p');
+      h.className = 'help';
+      h.id = id + '-help';
+      h.textContent = help;
+      input.setAttribute('aria-describedby', h.id);
+      box.append(l, input, h);
+      $(advanced ? 'settings-advanced' : 'settings-main').appendChild(box);
+    }
+  }
+
+  function settings() {
+    const s = {};
+    for (const [key] of SETTINGS) s[key] = $('set-' + key).value.trim();
+    return s;
+  }
+  function saveSettings() {
+    try { localStorage.setItem(STORE, JSON.stringify(settings())); } catch (e) { /* storage off: settings last this visit */ }
+  }
+  function loadSettings() {
+    let s = null;
+    try { s = JSON.parse(localStorage.getItem(STORE) || 'null'); } catch (e) { s = null; }
+    if (!s) return;
+    for (const [key] of SETTINGS) if (typeof s[key] === 'string') $('set-' + key).value = s[key];
+  }
+
+  // --- the worker -------------------------------------------------------
+  let worker = null, workerReady = false, nextId = 1, planId = 0;
+  const pending = new Map();
+  function startWorker() {
+    const src = document.getElementById('worker-source').textContent;
+    const url = URL.createObjectURL(new Blob([src], { type: 'text/javascript' }));
+    worker = new Worker(url);
+    workerReady = false;
+    worker.onmessage = (e) => onWorker(e.data);
+    worker.onerror = (e) => onWorker({ cmd: 'crashed', message: e.message || 'the worker stopped' });
+  }
+  function send(msg, transfer) {
+    msg.id = nextId++;
+    worker.postMessage(msg, transfer || []);
+    return msg.id;
+  }
+
+  // --- state -----------------------------------------------------------
+  let files = [];        // [{name, bytes: ArrayBuffer}]
+  let view = null;       // what aco_open said: holes, tools, ...
+  let routes = null;     // each tool's route as it stands
+  let result = null;     // what aco_finish said
+  let chart = null, chartData = null, chartTools = 0;
+  let started = 0;
+
+  function showError(text) {
+    const e = $('error');
+    e.textContent = text ? 'acodrill: error: ' + text : '';
+    e.hidden = !text;
+  }
+  function status(text) { $('status').textContent = text; }
+  function stem(name) { return name.replace(/^.*[\\/]/, '').replace(/\.[^.]*$/, '') || 'job'; }
+  function jobName() { return files.map((f) => stem(f.name)).join('+') || 'job'; }
+
+  function setFiles(list) {
+    files = list;
+    result = null;
+    routes = null;
+    enableSaves(false);
+    showError('');
+    $('results-body').innerHTML = '<p>The times, the tools and the route before and after appear here once a plan is made.</p>';
+    preview();
+  }
+  function preview() {
+    if (!files.length || !workerReady) return;
+    status('Reading ' + files.map((f) => f.name).join(', ') + '\u2026');
+    const copies = files.map((f) => ({ name: f.name, bytes: f.bytes.slice(0) }));
+    send({ cmd: 'open', files: copies, settings: settings() }, copies.map((c) => c.bytes));
+  }
+
+  function onWorker(msg) {
+    if (msg.cmd === 'ready') {
+      workerReady = true;
+      $('plan').disabled = false;
+      document.body.dataset.ready = '1';
+      status('Ready.');
+      preview();
+      return;
+    }
+    if (msg.cmd === 'crashed') {
+      // The module cannot be trusted after a fault (memory, an abort): a new worker.
+      showError(msg.message || 'the worker stopped');
+      running(false);
+      worker.terminate();
+      startWorker();
+      return;
+    }
+    if (msg.cmd === 'opened') {
+      if (msg.result.error) {
+        view = null;
+        showError(msg.result.error);
+        drawHoles();
+        $('holes-info').textContent = '';
+        status('');
+        running(false);
+        return;
+      }
+      showError('');
+      view = msg.result;
+      routes = null;
+      drawHoles();
+      describeHoles();
+      status(msg.planning ? 'Planning\u2026' : 'Read ' + view.holes.length / 3 + ' holes.');
+      return;
+    }
+    if (msg.cmd === 'progress' && msg.id === planId) {
+      for (const p of msg.progress) addProgress(p);
+      if (msg.routes) {
+        routes = msg.routes;
+        scheduleDraw();
+      }
+      return;
+    }
+    if (msg.cmd === 'finished' && msg.id === planId) {
+      running(false);
+      if (msg.result.error) {
+        showError(msg.result.error);
+        status('');
+        return;
+      }
+      result = msg.result;
+      view = result;
+      routes = result.routes;
+      drawHoles();
+      describeHoles();
+      showResults();
+      enableSaves(true);
+      status((result.stopped ? 'Stopped: the best routes so far. ' : 'Done. ') + result.iterations + ' iterations in ' +
+             result.solver_wall_s.toFixed(2) + ' s.');
+    }
+  }
+
+  function running(on) {
+    $('plan').disabled = on || !workerReady;
+    $('stop').disabled = !on;
+  }
+
+  function plan() {
+    if (!files.length) {
+      showError('open a file, or take the sample or a random plate, first');
+      return;
+    }
+    saveSettings();
+    showError('');
+    result = null;
+    enableSaves(false);
+    resetChart();
+    running(true);
+    started = performance.now();
+    const s = settings();
+    s.program_name = jobName() + '.' + (EXT[s.dialect] || 'nc');
+    const copies = files.map((f) => ({ name: f.name, bytes: f.bytes.slice(0) }));
+    planId = send({ cmd: 'plan', files: copies, settings: s }, copies.map((c) => c.bytes));
+    $('progress-text').textContent = 'Reading the files\u2026';
+  }
+
+  // --- progress and the chart --------------------------------------------
+  function resetChart() {
+    chartTools = 0;
+    chartData = [[]];
+    if (chart) { chart.destroy(); chart = null; }
+    $('chart').textContent = '';
+  }
+  function addProgress(p) {
+    $('progress-text').textContent = 'Tool ' + (p.tool + 1) + ' of ' + p.tools + ' (T' + p.tool_number + '), iteration ' +
+      p.iteration + (p.iterations < 2147483647 ? ' of ' + p.iterations : '') + ', ' + p.elapsed_s.toFixed(1) +
+      ' s, best route ' + p.best.toFixed(1) + ' mm';
+    if (typeof uPlot === 'undefined') return;
+    while (chartTools < p.tools) {
+      chartData.push(chartData[0].map(() => null));
+      chartTools++;
+    }
+    chartData[0].push(p.elapsed_s);
+    for (let t = 1; t <= chartTools; t++) chartData[t].push(t - 1 === p.tool ? p.best : null);
+    if (!chart) {
+      const series = [{ label: 'seconds' }];
+      for (let t = 0; t < chartTools; t++) {
+        series.push({ label: 'tool ' + (t + 1), stroke: COLOURS[t % COLOURS.length], spanGaps: false, points: { show: false } });
+      }
+      const width = Math.max(280, Math.min(860, $('chart').clientWidth || 600));
+      chart = new uPlot({ title: 'Best route of each tool (mm) against time (s)', width, height: 220, series,
+        axes: [{ label: 's' }, { label: 'mm' }], scales: { x: { time: false } } }, chartData, $('chart'));
+    } else {
+      chart.setData(chartData);
+    }
+  }
+
+  // --- drawing -------------------------------------------------------------
+  let drawQueued = false;
+  function scheduleDraw() {
+    if (drawQueued) return;
+    drawQueued = true;
+    requestAnimationFrame(() => { drawQueued = false; drawHoles(); });
+  }
+  function fit(canvas, xyd) {
+    let x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity;
+    for (let i = 0; i < xyd.length; i += 3) {
+      x0 = Math.min(x0, xyd[i]); x1 = Math.max(x1, xyd[i]);
+      y0 = Math.min(y0, xyd[i + 1]); y1 = Math.max(y1, xyd[i + 1]);
+    }
+    const pad = 12, w = canvas.width - 2 * pad, h = canvas.height - 2 * pad;
+    const k = Math.min(w / Math.max(1e-9, x1 - x0), h / Math.max(1e-9, y1 - y0));
+    return { k, X: (x) => pad + (x - x0) * k, Y: (y) => canvas.height - pad - (y - y0) * k };
+  }
+  function draw(canvas, v, orders) {
+    const g = canvas.getContext('2d');
+    g.clearRect(0, 0, canvas.width, canvas.height);
+    if (!v || !v.holes.length) return;
+    const xyd = v.holes, f = fit(canvas, xyd);
+    const toolOf = new Int32Array(xyd.length / 3);
+    v.tools.forEach((t, k) => { for (const h of t.holes) toolOf[h] = k; });
+    if (orders) {
+      g.lineWidth = 1;
+      orders.forEach((order, k) => {
+        if (!order.length) return;
+        g.strokeStyle = COLOURS[k % COLOURS.length];
+        g.globalAlpha = 0.6;
+        g.beginPath();
+        g.moveTo(f.X(xyd[3 * order[0]]), f.Y(xyd[3 * order[0] + 1]));
+        for (let i = 1; i < order.length; i++) g.lineTo(f.X(xyd[3 * order[i]]), f.Y(xyd[3 * order[i] + 1]));
+        g.stroke();
+      });
+      g.globalAlpha = 1;
+    }
+    const n = xyd.length / 3;
+    for (let i = 0; i < n; i++) {
+      const r = Math.max(1, 0.5 * xyd[3 * i + 2] * f.k);
+      g.fillStyle = v.tools.length ? COLOURS[toolOf[i] % COLOURS.length] : '#333';
+      if (n > 20000 || r < 2) g.fillRect(f.X(xyd[3 * i]) - r, f.Y(xyd[3 * i + 1]) - r, 2 * r, 2 * r);
+      else { g.beginPath(); g.arc(f.X(xyd[3 * i]), f.Y(xyd[3 * i + 1]), r, 0, 2 * Math.PI); g.fill(); }
+    }
+  }
+  function drawHoles() { draw($('holes-canvas'), view, routes); }
+
+  function text(tag, content) { const e = document.createElement(tag); e.textContent = content; return e; }
+  function table(head, rows, caption) {
+    const t = document.createElement('table');
+    if (caption) t.appendChild(text('caption', caption));
+    const tr = document.createElement('tr');
+    for (const h of head) { const th = text('th', h); th.scope = 'col'; tr.appendChild(th); }
+    t.appendChild(tr);
+    for (const r of rows) {
+      const row = document.createElement('tr');
+      r.forEach((c, i) => row.appendChild(text(i ? 'td' : 'th', c)));
+      t.appendChild(row);
+    }
+    return t;
+  }
+  function describeHoles() {
+    const box = $('holes-info');
+    box.textContent = '';
+    if (!view) return;
+    const e = view.extent;
+    box.appendChild(text('p', view.holes.length / 3 + ' holes, ' + view.tools.length + ' tool(s); holes X ' + e[0].toFixed(3) +
+      '..' + e[2].toFixed(3) + ', Y ' + e[1].toFixed(3) + '..' + e[3].toFixed(3) + ' mm (program coordinates)'));
+    box.appendChild(table(['Tool', 'Diameter mm', 'Holes'], view.tools.map((t) => [t.name || ('T' + t.number),
+      t.diameter_mm.toFixed(3) + (t.end_mill ? ' end mill' : ''), String(t.holes.length)]), 'Tools (colours as drawn)'));
+    const notes = [];
+    for (const i of view.inputs) {
+      notes.push(i.file + ': ' + i.holes + ' holes from ' + i.format);
+      for (const a of i.assumptions) notes.push(i.file + ': assumed ' + a);
+      for (const w of i.warnings) notes.push(i.file + (w.line ? ':' + w.line : '') + ': warning: ' + w.what);
+      for (const s of i.not_drilled) notes.push(i.file + (s.line ? ':' + s.line : '') + ': not drilled: ' + s.what);
+    }
+    for (const d of view.drill_map || []) notes.push(d.toLowerCase());
+    const ul = document.createElement('ul');
+    for (const n of notes.slice(0, 50)) ul.appendChild(text('li', n));
+    if (notes.length > 50) ul.appendChild(text('li', (notes.length - 50) + ' more (see the report)'));
+    box.appendChild(ul);
+  }
+  function showResults() {
+    const body = $('results-body');
+    body.textContent = '';
+    const min = (s) => (s / 60).toFixed(2);
+    const row = (label, st) => [label, st.travel_mm.toFixed(1), min(st.moves_s), min(st.drilling_s), min(st.tool_changes_s), min(st.pauses_s), min(st.time_s)];
+    body.appendChild(table(['Order', 'Travel mm', 'Moves min', 'Drilling min', 'Tool changes min', 'Pauses min', 'Total min'],
+      [row(result.program_input ? 'input program' : 'input order', result.input_order), row('nearest neighbour', result.nearest_neighbor),
+       row('optimized', result.optimized)], 'Where the time goes'));
+    const saved = result.input_order.time_s > 0 ? (100 * (result.input_order.time_s - result.optimized.time_s) / result.input_order.time_s) : 0;
+    body.appendChild(text('p', 'Saved against the input order: ' + (result.input_order.travel_mm - result.optimized.travel_mm).toFixed(1) +
+      ' mm of travel, ' + saved.toFixed(1) + ' % of the time.'));
+    const pics = document.createElement('div');
+    pics.className = 'pictures';
+    for (const [label, orders] of [['Input order', result.input_routes], ['Optimized', result.routes]]) {
+      const fig = document.createElement('figure');
+      const c = document.createElement('canvas');
+      c.width = 420; c.height = 280;
+      c.setAttribute('role', 'img');
+      c.setAttribute('aria-label', 'The route in ' + label.toLowerCase());
+      fig.append(c, text('figcaption', label));
+      pics.appendChild(fig);
+      draw(c, result, orders);
+    }
+    body.appendChild(pics);
+  }
+
+  // --- saving --------------------------------------------------------------
+  function enableSaves(on) {
+    for (const id of ['save-program', 'save-report', 'save-setup', 'save-picture', 'save-excellon']) $(id).disabled = !on;
+  }
+  function download(name, content, type) {
+    const a = document.createElement('a');
+    a.href = URL.createObjectURL(new Blob([content], { type }));
+    a.download = name;
+    document.body.appendChild(a);
+    a.click();
+    setTimeout(() => { URL.revokeObjectURL(a.href); a.remove(); }, 1000);
+  }
+
+  // --- plates of our own ----------------------------------------------------
+  function sampleFile() {
+    const text = JSON.parse(document.getElementById('sample-plate').textContent);
+    return { name: 'plate70.dxf', bytes: new TextEncoder().encode(text).buffer };
+  }
+  function randomFile(n) {
+    // A plate of 300 x 200 mm with three diameters, the same for the same N.
+    let seed = 12345 + n;
+    const rnd = () => { seed = (seed * 1103515245 + 12345) % 2147483648; return seed / 2147483648; };
+    const d = [3.0, 5.0, 6.35];
+    let csv = 'x,y,diameter\n';
+    for (let i = 0; i < n; i++) csv += (rnd() * 300).toFixed(3) + ',' + (rnd() * 200).toFixed(3) + ',' + d[Math.floor(rnd() * 3)] + '\n';
+    return { name: 'random-' + n + '.csv', bytes: new TextEncoder().encode(csv).buffer };
+  }
+
+  // --- wiring ---------------------------------------------------------------
+  buildForm();
+  loadSettings();
+  $('settings').addEventListener('change', () => { saveSettings(); if (files.length && $('stop').disabled) preview(); });
+  $('reset').addEventListener('click', () => {
+    try { localStorage.removeItem(STORE); } catch (e) { /* nothing kept */ }
+    for (const [key] of SETTINGS) { const el = $('set-' + key); el.value = el.tagName === 'SELECT' ? el.options[0].value : ''; }
+    preview();
+  });
+  $('files').addEventListener('change', async (e) => {
+    const list = [];
+    for (const f of e.target.files) list.push({ name: f.name, bytes: await f.arrayBuffer() });
+    if (list.length) setFiles(list);
+  });
+  document.addEventListener('dragover', (e) => e.preventDefault());
+  document.addEventListener('drop', async (e) => {
+    e.preventDefault();
+    const list = [];
+    for (const f of e.dataTransfer.files) list.push({ name: f.name, bytes: await f.arrayBuffer() });
+    if (list.length) setFiles(list);
+  });
+  $('sample').addEventListener('click', () => setFiles([sampleFile()]));
+  $('random').addEventListener('click', () => {
+    const n = Math.max(2, Math.min(200000, parseInt($('random-holes').value, 10) || 500));
+    setFiles([randomFile(n)]);
+  });
+  $('plan').addEventListener('click', plan);
+  $('stop').addEventListener('click', () => { worker.postMessage({ cmd: 'stop' }); status('Stopping\u2026'); });
+  const dialect = () => result.dialect || 'haas';
+  $('save-program').addEventListener('click', () => download(jobName() + '.' + (EXT[dialect()] || 'nc'), result.files.program, 'text/plain'));
+  $('save-report').addEventListener('click', () => download(jobName() + '.json', result.files.report, 'application/json'));
+  $('save-setup').addEventListener('click', () => download(jobName() + '-setup.html', result.files.setup_sheet, 'text/html'));
+  $('save-picture').addEventListener('click', () => download(jobName() + '-route.svg', result.files.route_svg, 'image/svg+xml'));
+  $('save-excellon').addEventListener('click', () => download(jobName() + '-optimized.drl', result.files.excellon, 'text/plain'));
+  startWorker();
+})();

@@ -1,0 +1,227 @@
+// The browser's door to the job (issue 65): C functions the page's worker
+// calls, taking the inputs' bytes and the settings as JSON and giving back
+// JSON. One job at a time, driven in slices (job::PlanJob): the worker runs
+// a slice, posts the progress and the route so far, and handles its
+// messages (Stop) before the next, since a worker inside C++ sees none.
+#include <emscripten/emscripten.h>
+
+#include <cstdint>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "formats/error.h"
+#include "job/plan.h"
+
+namespace {
+
+using nlohmann::json;
+
+struct Session {
+  std::vector<job::InputFile> files;
+  std::unique_ptr<job::PlanJob> job;
+  json progress = json::array();  // the progress since the last slice
+  std::string out;                // the last answer, alive until the next call
+};
+Session& session() {
+  static Session s;
+  return s;
+}
+
+const char* answer(const json& j) {
+  Session& s = session();
+  s.out = j.dump(-1, ' ', false, json::error_handler_t::replace);
+  return s.out.c_str();
+}
+
+// The page's settings, named as its controls; an empty or missing value is
+// the option's default.
+job::PlanSettings settings_of(const json& j) {
+  job::PlanSettings s;
+  auto text = [&](const char* key, std::string& field) {
+    if (j.contains(key) && j[key].is_string()) field = j[key].get<std::string>();
+  };
+  auto number = [&](const char* key) -> std::optional<double> {
+    if (!j.contains(key)) return std::nullopt;
+    if (j[key].is_number()) return j[key].get<double>();
+    if (j[key].is_string() && !j[key].get<std::string>().empty()) {
+      const std::string v = j[key].get<std::string>();
+      char* end = nullptr;
+      const double d = std::strtod(v.c_str(), &end);
+      if (end == v.c_str() || *end != '\0') throw formats::InputError("\"" + v + "\" is not a number (" + key + ")");
+      return d;
+    }
+    return std::nullopt;
+  };
+  text("machine", s.machine);
+  text("dialect", s.dialect);
+  text("units", s.units);
+  text("origin", s.origin);
+  text("material", s.material);
+  text("objective", s.objective);
+  text("drills", s.bench.drills);
+  text("side", s.bench.side);
+  if (s.bench.side.empty()) s.bench.side = "front";
+  text("mirror_axis", s.bench.mirror_axis);
+  text("panel", s.panel);
+  text("pitch", s.pitch);
+  text("algorithm", s.solver.algorithm);
+  if (s.solver.algorithm.empty()) s.solver.algorithm = "focused";
+  text("local_search", s.solver.local_search);
+  if (s.solver.local_search.empty()) s.solver.local_search = "auto";
+  text("program_name", s.program_name);
+  s.thickness_mm = number("thickness");
+  s.bench.end_mill_mm = number("end_mill");
+  s.probe_plate_mm = number("probe_plate");
+  s.bench.alignment_pins_mm = number("alignment_pins");
+  if (auto v = number("time_limit")) s.solver.time_limit_s = *v;
+  if (auto v = number("iterations")) s.solver.iterations = static_cast<int>(*v);
+  if (auto v = number("seed")) s.solver.seed = static_cast<std::uint64_t>(*v);
+  if (auto v = number("ants")) s.solver.ants = static_cast<int>(*v);
+  if (auto v = number("alpha")) s.solver.alpha = *v;
+  s.solver.beta = number("beta");
+  s.solver.threads = 1;  // no threads in a file:// page (no cross-origin isolation)
+  s.wanted = job::Wanted::all();
+  return s;
+}
+
+json error_of(const job::Result& r) { return {{"error", r.error}, {"exit_code", r.exit_code}}; }
+
+json stats_of(const planning::RouteStats& st) {
+  return {{"travel_mm", st.travel_mm},
+          {"time_s", st.time_s},
+          {"moves_s", st.split.moves_s},
+          {"drilling_s", st.split.drilling_s},
+          {"tool_changes_s", st.split.tool_changes_s},
+          {"pauses_s", st.split.pauses_s}};
+}
+
+// The holes as the page draws them: x, y, diameter flat, and each tool with its holes.
+json holes_of(const job::Result& r) {
+  const aco::HoleSet& holes = r.holes.empty() ? r.inputs.holes.holes : r.holes;
+  json xyd = json::array();
+  for (const aco::Hole& h : holes) {
+    xyd.push_back(std::round(h.center.x * 1e4) / 1e4);
+    xyd.push_back(std::round(h.center.y * 1e4) / 1e4);
+    xyd.push_back(h.diameter);
+  }
+  json tools = json::array();
+  for (const planning::ToolGroup& g : r.plan.groups) {
+    tools.push_back({{"number", g.tool.number},
+                     {"name", gcode::tool_name(g.tool)},
+                     {"diameter_mm", g.tool.diameter_mm},
+                     {"end_mill", g.tool.end_mill},
+                     {"holes", g.input_order}});
+  }
+  json inputs = json::array();
+  const bool program = r.inputs.holes.program != nullptr;
+  for (std::size_t k = 0; k < r.inputs.sources.size(); ++k) {
+    const formats::LoadedHoles& part = program ? r.inputs.holes : r.inputs.parts[k];
+    json notes = json::array();
+    for (const formats::Note& n : part.warnings) notes.push_back({{"line", n.line}, {"what", n.message}});
+    json skipped = json::array();
+    for (const formats::Note& n : part.skipped) skipped.push_back({{"line", n.line}, {"what", n.message}});
+    inputs.push_back({{"file", r.inputs.sources[k].file},
+                      {"format", formats::to_string(part.format)},
+                      {"holes", program ? part.holes.size() : r.inputs.sources[k].holes},
+                      {"warnings", notes},
+                      {"not_drilled", skipped},
+                      {"assumptions", part.assumptions},
+                      {"slots_drilled", part.slots_drilled},
+                      {"round_contours", part.round_contours}});
+  }
+  const planning::Extent& e = r.placement.extent;
+  return {{"holes", xyd},
+          {"tools", tools},
+          {"inputs", inputs},
+          {"program_input", program},
+          {"extent", {e.x_min, e.y_min, e.x_max, e.y_max}},
+          {"drill_map", [&] {
+             json m = json::array();
+             for (const planning::DrillMapping& d : r.plan.drill_map) m.push_back(job::drill_map_line(d));
+             return m;
+           }()}};
+}
+
+}  // namespace
+
+extern "C" {
+
+// A new job's inputs: call once a file, then aco_open.
+EMSCRIPTEN_KEEPALIVE void aco_add_file(const char* name, const std::uint8_t* bytes, int size) {
+  session().files.push_back({name, std::string(reinterpret_cast<const char*>(bytes), static_cast<std::size_t>(size)), ""});
+}
+
+// Reads the files with the settings: the holes, their tools and what the
+// inputs say, or the error. The job then waits for aco_advance.
+EMSCRIPTEN_KEEPALIVE const char* aco_open(const char* settings_json) {
+  Session& s = session();
+  s.job.reset();
+  s.progress = json::array();
+  std::vector<job::InputFile> files = std::move(s.files);
+  s.files.clear();
+  try {
+    const job::PlanSettings settings = settings_of(json::parse(settings_json));
+    s.job = std::make_unique<job::PlanJob>(std::move(files), settings, [](const job::Progress& p) {
+      session().progress.push_back({{"tool", p.tool},
+                                    {"tools", p.tools},
+                                    {"tool_number", p.tool_number},
+                                    {"iteration", p.iteration},
+                                    {"iterations", p.iterations},
+                                    {"best", p.best_length},
+                                    {"elapsed_s", p.elapsed_s},
+                                    {"improved", p.improved}});
+    });
+  } catch (const formats::InputError& e) {
+    return answer({{"error", e.where_what()}, {"exit_code", 2}});
+  } catch (const std::exception& e) {
+    return answer({{"error", e.what()}, {"exit_code", 2}});
+  }
+  const job::Result& r = s.job->state();
+  if (r.exit_code != 0) return answer(error_of(r));
+  return answer(holes_of(r));
+}
+
+// Routes for `seconds` (or `iterations`): whether the job is done, the
+// progress heard, and (when it changed) each tool's route as it stands.
+EMSCRIPTEN_KEEPALIVE const char* aco_advance(int iterations, double seconds) {
+  Session& s = session();
+  if (!s.job) return answer({{"done", true}});
+  const bool done = s.job->advance(iterations, seconds);
+  json out = {{"done", done}, {"progress", s.progress}};
+  bool improved = false;
+  for (const json& p : s.progress) improved = improved || p["improved"].get<bool>();
+  s.progress = json::array();
+  if (improved && !done) out["routes"] = s.job->routes_so_far();
+  return answer(out);
+}
+
+// The outputs (the routing ends here if it has not): files, summary, or the error.
+EMSCRIPTEN_KEEPALIVE const char* aco_finish() {
+  Session& s = session();
+  if (!s.job) return answer({{"error", "no job"}, {"exit_code", 2}});
+  job::Result r = s.job->finish();
+  s.job.reset();
+  if (r.exit_code != 0) return answer(error_of(r));
+  json routes = json::array(), input_routes = json::array();
+  for (const planning::ToolGroup& g : r.plan.groups) {
+    routes.push_back(g.optimized);
+    input_routes.push_back(g.input_order);
+  }
+  json out = holes_of(r);
+  out["files"] = {{"program", r.files.program},     {"report", r.files.report},       {"setup_sheet", r.files.setup_sheet},
+                  {"route_svg", r.files.route_svg}, {"excellon", r.files.excellon}, {"gerber", r.files.gerber}};
+  out["routes"] = routes;
+  out["input_routes"] = input_routes;
+  out["stopped"] = r.stopped;
+  out["iterations"] = r.plan.iterations;
+  out["solver_wall_s"] = r.plan.solver_wall_s;
+  out["input_order"] = stats_of(r.plan.input_order);
+  out["nearest_neighbor"] = stats_of(r.plan.nearest_neighbor);
+  out["optimized"] = stats_of(r.plan.optimized);
+  out["dialect"] = gcode::to_string(r.dialect);
+  return answer(out);
+}
+
+}  // extern "C"
