@@ -1,0 +1,163 @@
+// The page in a real browser (issue 65): Debian's Chromium, headless, driven
+// by playwright-core, with build-web/acodrill.html opened from disk. Each
+// program saved from the page is compared byte for byte with what the Linux
+// build's `acodrill plan` writes with the same options.
+//   node page_test.cjs PAGE.html ACODRILL SOURCE_DIR
+'use strict';
+const { chromium } = require('playwright-core');
+const { execFileSync } = require('child_process');
+const fs = require('fs');
+const os = require('os');
+const path = require('path');
+
+const [page_html, acodrill, root] = process.argv.slice(2);
+const url = 'file://' + path.resolve(page_html);
+const work = fs.mkdtempSync(path.join(os.tmpdir(), 'acodrill-page-'));
+let failures = 0;
+function check(ok, what) {
+  console.log((ok ? 'ok   ' : 'FAIL ') + what);
+  if (!ok) failures++;
+}
+
+// What acodrill plan writes for these inputs and options.
+function cli(inputs, options) {
+  const out = path.join(work, 'cli-' + Math.random().toString(36).slice(2) + '.nc');
+  execFileSync(acodrill, ['plan', ...inputs, '-o', out, '-q', ...options]);
+  return fs.readFileSync(out);
+}
+
+async function fill(page, settings) {
+  for (const [label, value] of Object.entries(settings)) {
+    const box = page.getByLabel(label, { exact: true });
+    if ((await box.evaluate((e) => e.tagName)) === 'SELECT') await box.selectOption(value);
+    else await box.fill(value);
+    await box.dispatchEvent('change');
+  }
+}
+
+async function planAndSave(page, button = 'Save program') {
+  await page.getByRole('button', { name: 'Plan', exact: true }).click();
+  await page.waitForFunction(() => !document.getElementById('save-program').disabled ||
+                                   !document.getElementById('error').hidden, null, { timeout: 120000 });
+  const error = await page.locator('#error').textContent();
+  if (error) throw new Error('the page says: ' + error);
+  const [download] = await Promise.all([page.waitForEvent('download'), page.getByRole('button', { name: button }).click()]);
+  const saved = path.join(work, download.suggestedFilename());
+  await download.saveAs(saved);
+  return { name: download.suggestedFilename(), bytes: fs.readFileSync(saved) };
+}
+
+async function fresh(context) {
+  const page = await context.newPage();
+  await page.goto(url);
+  await page.waitForSelector('body[data-ready="1"]', { timeout: 30000 });
+  return page;
+}
+
+(async () => {
+  const browser = await chromium.launch({ executablePath: '/usr/lib/chromium/chromium',
+                                          args: ['--no-sandbox', '--disable-dev-shm-usage'] });
+  const context = await browser.newContext({ acceptDownloads: true });
+  // Nothing may leave the page: every request is of the file itself, data: or blob:.
+  const outside = [];
+  context.on('request', (r) => { if (!/^(file|data|blob):/.test(r.url())) outside.push(r.url()); });
+  const errors = [];
+
+  let page = await fresh(context);
+  page.on('pageerror', (e) => errors.push(e.message));
+  // Every control interface.md names is there, by its accessible name.
+  for (const label of ['Input files', 'Random holes', 'Machine', 'Dialect', 'Units', 'Origin', 'Material', 'Thickness',
+                       'Drills owned', 'End mill', 'Touch plate', 'Side', 'Alignment pins', 'Time limit', 'Iterations',
+                       'Seed', 'Algorithm', 'Alpha', 'Beta', 'Ants']) {
+    check(await page.getByLabel(label, { exact: true }).count() === 1, 'control "' + label + '"');
+  }
+  for (const name of ['Sample plate', 'Random plate', 'Plan', 'Stop', 'Save program', 'Save report', 'Save setup sheet',
+                      'Save picture', 'Save Excellon']) {
+    check(await page.getByRole('button', { name, exact: true }).count() === 1, 'button "' + name + '"');
+  }
+  for (const name of ['Holes', 'Progress', 'Results']) {
+    check(await page.getByRole('region', { name }).count() === 1, 'region "' + name + '"');
+  }
+
+  // 1. A DXF (the thesis's plate), saved and compared.
+  const plate = path.join(root, 'samples', 'plate70.dxf');
+  await page.getByLabel('Input files', { exact: true }).setInputFiles(plate);
+  await fill(page, { Iterations: '40', Seed: '3' });
+  let saved = await planAndSave(page);
+  check(saved.name === 'plate70.nc', 'the program is named after the input: ' + saved.name);
+  check(saved.bytes.equals(cli([plate], ['--iterations', '40', '--seed', '3'])), 'DXF: the program is acodrill plan\'s, byte for byte');
+  const holesText = await page.getByRole('region', { name: 'Holes' }).textContent();
+  check(holesText.includes('70 holes'), 'the holes region tells the holes: ' + holesText.slice(0, 60));
+
+  // 2. A KiCad Excellon file on the router, with drills owned and an end mill.
+  const drl = path.join(root, 'tests', 'data', 'kicad', 'video-mm-decimal.drl');
+  await page.getByLabel('Input files', { exact: true }).setInputFiles(drl);
+  await fill(page, { Machine: 'router', 'Drills owned': '0.4,0.6,0.8', 'End mill': '0.5', Iterations: '30', Seed: '5' });
+  saved = await planAndSave(page);
+  check(saved.bytes.equals(cli([drl], ['--machine', 'router', '--drills', '0.4,0.6,0.8', '--end-mill', '0.5',
+                                      '--iterations', '30', '--seed', '5'])),
+        'Excellon, router, owned drills and an end mill: the program is acodrill plan\'s, byte for byte');
+  const results = await page.getByRole('region', { name: 'Results' }).textContent();
+  check(results.includes('nearest neighbour') && results.includes('Tool changes'), 'the results show the time split');
+
+  // 3. A panel of six, from the back with pins, Fanuc in inch.
+  await fill(page, { Machine: '', 'Drills owned': '', 'End mill': '', Panel: '3x2', Pitch: '120,90', Side: 'back',
+                     'Alignment pins': '3', Origin: 'center', Dialect: 'fanuc', Units: 'inch', Iterations: '25', Seed: '2' });
+  const pic = path.join(root, 'tests', 'data', 'kicad', 'pic_programmer-inch-decimal.drl');
+  await page.getByLabel('Input files', { exact: true }).setInputFiles(pic);
+  saved = await planAndSave(page);
+  check(saved.bytes.equals(cli([pic], ['--panel', '3x2', '--pitch', '120,90', '--side', 'back', '--alignment-pins', '3',
+                                      '--origin', 'center', '--dialect', 'fanuc', '--units', 'inch', '--iterations', '25',
+                                      '--seed', '2'])),
+        'panel: the program is acodrill plan\'s, byte for byte');
+  const excellon = await planAndSave(page, 'Save Excellon');
+  check(excellon.bytes.toString().startsWith('M48'), 'Save Excellon gives a drill file');
+
+  // 4. Settings kept across a reload.
+  await page.reload();
+  await page.waitForSelector('body[data-ready="1"]', { timeout: 30000 });
+  check(await page.getByLabel('Seed', { exact: true }).inputValue() === '2' &&
+        await page.getByLabel('Panel', { exact: true }).inputValue() === '3x2' &&
+        await page.getByLabel('Dialect', { exact: true }).inputValue() === 'fanuc', 'settings are kept across a reload');
+  await page.getByRole('button', { name: 'Reset settings' }).click();
+
+  // 5. Progress is seen and Stop obeyed: a random plate without a limit.
+  await page.getByLabel('Random holes', { exact: true }).fill('4000');
+  await page.getByRole('button', { name: 'Random plate', exact: true }).click();
+  await page.getByRole('button', { name: 'Plan', exact: true }).click();
+  await page.waitForFunction(() => /iteration \d+/.test(document.getElementById('progress-text').textContent), null, { timeout: 60000 });
+  const before = await page.locator('#progress-text').textContent();
+  await page.waitForTimeout(1500);
+  check((await page.locator('#progress-text').textContent()) !== before, 'progress moves: ' + before);
+  check(await page.locator('#chart canvas').count() > 0, 'the chart is drawn');
+  await page.getByRole('button', { name: 'Stop', exact: true }).click();
+  await page.waitForFunction(() => !document.getElementById('save-program').disabled, null, { timeout: 30000 });
+  check((await page.locator('#status').textContent()).startsWith('Stopped'), 'Stop keeps the best route so far');
+  const [dl] = await Promise.all([page.waitForEvent('download'), page.getByRole('button', { name: 'Save program' }).click()]);
+  const stopped = path.join(work, 'stopped.nc');
+  await dl.saveAs(stopped);
+  const verify = execFileSync(acodrill, ['verify', stopped]).toString();
+  check(/^holes 4000$/m.test(verify), 'the stopped program drills every one of the 4000 holes');
+
+  // 6. A bad file's error is shown, and the next file plans.
+  const bad = path.join(work, 'bad.csv');
+  fs.writeFileSync(bad, 'x,y,diameter\n1,2,3\n4,five,3\n');
+  await page.getByLabel('Input files', { exact: true }).setInputFiles(bad);
+  await page.waitForFunction(() => !document.getElementById('error').hidden, null, { timeout: 30000 });
+  const error = await page.getByRole('alert', { name: 'Error' }).textContent();
+  check(/^acodrill: error: bad\.csv:3: /.test(error), 'a bad file is one line in Error: ' + error);
+  await page.getByLabel('Input files', { exact: true }).setInputFiles(plate);
+  await fill(page, { Iterations: '40', Seed: '3' });
+  saved = await planAndSave(page);
+  check(saved.bytes.equals(cli([plate], ['--iterations', '40', '--seed', '3'])), 'after a bad file a good one plans');
+
+  check(errors.length === 0, 'no script error: ' + errors.join('; '));
+  check(outside.length === 0, 'no request leaves file:, data: or blob:: ' + outside.join(' '));
+  await browser.close();
+  fs.rmSync(work, { recursive: true, force: true });
+  console.log(failures ? failures + ' check(s) failed' : 'acodrill: the page passes in Chromium');
+  process.exit(failures ? 1 : 0);
+})().catch((e) => {
+  console.error(e);
+  process.exit(1);
+});
