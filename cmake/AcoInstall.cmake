@@ -19,6 +19,10 @@ install(TARGETS aco_geometry aco aco_dxf aco_gcode aco_formats aco_planning aco_
 foreach(dir libaco dxf gcode formats planning job)
   install(DIRECTORY ${PROJECT_SOURCE_DIR}/${dir}/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 endforeach()
+# The page (issue 65: scripts/web writes it), installed where it has been built:
+# /usr/share/acodrill/acodrill.html in the package.
+set(ACO_WEB_PAGE "${PROJECT_SOURCE_DIR}/build-web/acodrill.html" CACHE FILEPATH "The page to install (scripts/web)")
+install(FILES ${ACO_WEB_PAGE} DESTINATION ${CMAKE_INSTALL_DATADIR}/acodrill OPTIONAL)
 install(EXPORT acodrillTargets NAMESPACE aco:: DESTINATION ${ACO_CMAKE_DIR})
 configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/acodrillConfig.cmake.in
                               ${PROJECT_BINARY_DIR}/acodrillConfig.cmake INSTALL_DESTINATION ${ACO_CMAKE_DIR})

@@ -17,6 +17,7 @@
       'Program zero (X0 Y0): where the machinist sets the work offset. Also X,Y in mm with the command line.'],
     ['material', 'Material', 'select', [['', 'steel; PCB for drill files'], ['steel', 'steel'], ['aluminium', 'aluminium'], ['pcb', 'PCB']], 'Feeds and speeds of the generated tools.'],
     ['thickness', 'Thickness', 'number', 'mm', 'Part thickness in mm (default 6.35, or 1.6 for PCB): how deep each hole is drilled.'],
+    ['default_diameter', 'Default diameter', 'number', 'mm', 'Diameter in mm of the holes an input gives none (CSV rows without one, TSPLIB nodes).'],
     ['drills', 'Drills owned', 'text', 'e.g. 0.6,0.8,1.0,1.2', 'The drills you own, mm, comma-separated (DIA or DIA:-MINUS:+PLUS). Each hole goes to a drill that fits it. Empty: one drill per diameter.'],
     ['end_mill', 'End mill', 'number', 'mm', 'Diameter of an end mill for the holes no owned drill fits: each is milled by a helix to its size.'],
     ['probe_plate', 'Touch plate', 'number', 'mm', 'Thickness of a touch plate: after each tool change GRBL, Marlin and LinuxCNC programs probe Z on it.'],
@@ -268,7 +269,9 @@
     }
     const pad = 12, w = canvas.width - 2 * pad, h = canvas.height - 2 * pad;
     const k = Math.min(w / Math.max(1e-9, x1 - x0), h / Math.max(1e-9, y1 - y0));
-    return { k, X: (x) => pad + (x - x0) * k, Y: (y) => canvas.height - pad - (y - y0) * k };
+    // Centred in the canvas, Y up as on the machine.
+    const ox = pad + (w - (x1 - x0) * k) / 2, oy = pad + (h - (y1 - y0) * k) / 2;
+    return { k, X: (x) => ox + (x - x0) * k, Y: (y) => canvas.height - oy - (y - y0) * k };
   }
   function draw(canvas, v, orders) {
     const g = canvas.getContext('2d');
@@ -382,8 +385,14 @@
   }
   function randomFile(n) {
     // A plate of 300 x 200 mm with three diameters, the same for the same N.
-    let seed = 12345 + n;
-    const rnd = () => { seed = (seed * 1103515245 + 12345) % 2147483648; return seed / 2147483648; };
+    let seed = (12345 + n) >>> 0;
+    const rnd = () => {  // mulberry32: 32-bit integer steps, exact in JavaScript
+      seed = (seed + 0x6d2b79f5) >>> 0;
+      let t = seed;
+      t = Math.imul(t ^ (t >>> 15), t | 1);
+      t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
+      return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
+    };
     const d = [3.0, 5.0, 6.35];
     let csv = 'x,y,diameter\n';
     for (let i = 0; i < n; i++) csv += (rnd() * 300).toFixed(3) + ',' + (rnd() * 200).toFixed(3) + ',' + d[Math.floor(rnd() * 3)] + '\n';

@@ -72,6 +72,7 @@ job::PlanSettings settings_of(const json& j) {
   if (s.solver.local_search.empty()) s.solver.local_search = "auto";
   text("program_name", s.program_name);
   s.thickness_mm = number("thickness");
+  s.default_diameter_mm = number("default_diameter");
   s.bench.end_mill_mm = number("end_mill");
   s.probe_plate_mm = number("probe_plate");
   s.bench.alignment_pins_mm = number("alignment_pins");
