@@ -61,6 +61,10 @@ Machine parse_machine(const std::string& text, const std::string& path) {
   m.rapid_z_mm_min = json_number(j, "rapid_z_mm_min", m.rapid_z_mm_min, path);
   m.accel_mm_s2 = json_number(j, "accel_mm_s2", m.accel_mm_s2, path);
   m.tool_change_s = json_number(j, "tool_change_s", m.tool_change_s, path);
+  m.junction_deviation_mm = json_number(j, "junction_deviation_mm", m.junction_deviation_mm, path);
+  m.arc_tolerance_mm = json_number(j, "arc_tolerance_mm", m.arc_tolerance_mm, path);
+  if (!(m.junction_deviation_mm >= 0 && m.junction_deviation_mm <= 10)) throw UserError(path, 0, "junction_deviation_mm must be 0..10");
+  if (!(m.arc_tolerance_mm > 0 && m.arc_tolerance_mm <= 1)) throw UserError(path, 0, "arc_tolerance_mm must be in (0, 1]");
   m.max_rpm = static_cast<int>(json_number(j, "max_rpm", m.max_rpm, path));
   if (m.max_rpm < 1) throw UserError(path, 0, "max_rpm must be >= 1");
   if (j.contains("linear_rapids")) {
@@ -184,6 +188,18 @@ double rapid_time_s(double distance, double rate_mm_min, double accel) {
   // Trapezoid: accelerate to v, cruise, brake; a short move never reaches v (triangle).
   if (distance >= v * v / accel) return distance / v + v / accel;
   return 2.0 * std::sqrt(distance / accel);
+}
+
+gcode::Kinematics kinematics_of(const Machine& m, gcode::Dialect dialect) {
+  gcode::Kinematics k;
+  k.rate_mm_min[0] = k.rate_mm_min[1] = m.rapid_xy_mm_min;
+  k.rate_mm_min[2] = m.rapid_z_mm_min;
+  k.accel_mm_s2[0] = k.accel_mm_s2[1] = k.accel_mm_s2[2] = m.accel_mm_s2;
+  k.junction_deviation_mm = m.junction_deviation_mm;
+  k.arc_tolerance_mm = m.arc_tolerance_mm;
+  k.linear_rapids = m.linear_rapids;
+  k.dwell_p_in_ms = dialect == gcode::Dialect::Marlin;
+  return k;
 }
 
 }  // namespace planning

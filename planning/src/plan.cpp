@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <map>
+#include <sstream>
 
 #include "aco/baselines.h"
 #include "json.h"
@@ -14,116 +15,42 @@ namespace {
 
 std::string fmt3(double v) { return gcode::format_number(v, 3); }
 
-double xy_move_time(aco::Point2 a, aco::Point2 b, const Machine& m) {
-  const double dx = std::fabs(a.x - b.x), dy = std::fabs(a.y - b.y);
-  if (m.linear_rapids) return rapid_time_s(std::hypot(dx, dy), m.rapid_xy_mm_min, m.accel_mm_s2);
-  return std::max(rapid_time_s(dx, m.rapid_xy_mm_min, m.accel_mm_s2), rapid_time_s(dy, m.rapid_xy_mm_min, m.accel_mm_s2));
-}
-
-// Time of one milled hole from R: the feed to the top of the part, the
-// helix, the circle at the depth and the way to the centre at the tool's
-// feed, the rapid out.
-double milled_time_s(const gcode::Tool& t, double hole_mm, const gcode::ProgramSettings& s, const Machine& m,
-                     bool retract_initial) {
-  const auto zr = [&](double d) { return rapid_time_s(d, m.rapid_z_mm_min, m.accel_mm_s2); };
-  const gcode::Helix h = gcode::helix_for(hole_mm, t);
-  double time = (h.path_radius_mm == 0.0 ? s.r_plane_mm - t.depth_mm : s.r_plane_mm + h.length_mm()) / t.feed_mm_min * 60.0;
-  time += zr(s.r_plane_mm - t.depth_mm);
-  if (retract_initial) time += 2.0 * zr(s.initial_z_mm - s.r_plane_mm);
-  return time;
-}
-
-// Z time of one hole's cycle at the R plane: feed down, pecks, dwell, rapid out.
-double cycle_time_s(const gcode::Tool& t, const gcode::ProgramSettings& s, const Machine& m, bool retract_initial) {
-  const double depth = s.r_plane_mm - t.depth_mm;
-  double time = depth / t.feed_mm_min * 60.0;
-  const auto zr = [&](double d) { return rapid_time_s(d, m.rapid_z_mm_min, m.accel_mm_s2); };
-  if ((t.cycle == gcode::Cycle::G83 || t.cycle == gcode::Cycle::G73) && t.peck_mm > 0) {
-    // A canned cycle counts pecks from R; acodrill's written-out cycles
-    // (GRBL, Marlin) from the top of the part, the air above it in the first stroke.
-    const double air = gcode::has_canned_cycles(s.dialect) ? 0.0 : std::max(0.0, s.r_plane_mm);
-    const int pecks = static_cast<int>(std::ceil((depth - air) / t.peck_mm - 1e-9));
-    for (int k = 1; k < pecks; ++k) {
-      const double reached = air + k * t.peck_mm;
-      // G83 retracts to R and comes back; G73 backs off a little.
-      time += t.cycle == gcode::Cycle::G83 ? 2.0 * zr(reached) : 2.0 * zr(0.25);
-    }
-  }
-  if (t.cycle == gcode::Cycle::G82) time += t.dwell_s;
-  time += zr(depth);  // out of the hole to R
-  if (retract_initial) time += 2.0 * zr(s.initial_z_mm - s.r_plane_mm);
-  return time;
-}
-
 }  // namespace
 
 RouteStats route_stats(const aco::HoleSet& holes, const std::vector<ToolGroup>& groups,
                        const std::vector<const aco::Order*>& orders, const PlanOptions& options) {
   RouteStats st;
   const Machine& m = options.machine;
-  const auto& s = options.program;
-  TimeSplit& split = st.split;
-  // Each part is added to the total as it is added to its share, in the same order as ever.
-  auto spend = [&](double& share, double seconds) {
-    share += seconds;
-    st.time_s += seconds;
-  };
-  const bool waits_for_spindle = !gcode::has_canned_cycles(s.dialect);
+  // The travel: start -> every hole of every tool -> the finish, as the crow flies.
   aco::Point2 at = m.start;
+  std::size_t drilled = 0;
   for (std::size_t g = 0; g < groups.size(); ++g) {
-    const aco::Order& order = *orders[g];
-    const double before = st.time_s;
-    if (order.empty()) {
-      st.tool_time_s.push_back(0.0);
-      continue;
+    for (aco::HoleIndex h : *orders[g]) {
+      st.travel_mm += aco::euclidean(at, holes[h].center);
+      at = holes[h].center;
+      if (!groups[g].tool.end_mill) ++drilled;
     }
-    spend(split.tool_changes_s, m.tool_change_s);
-    // A touch plate: the probe's way down from the clearance plane at its
-    // feed is part of changing the tool (the operator's share is in tool_change_s).
-    if (s.probe_plate_mm) spend(split.tool_changes_s, (s.initial_z_mm - *s.probe_plate_mm) / s.probe_feed_mm_min * 60.0);
-    if (waits_for_spindle) spend(split.pauses_s, m.spindle_start_s);
-    // Down from Z home to the initial plane, once per tool (approximate Z home as 100 mm up).
-    spend(split.moves_s, rapid_time_s(100.0, m.rapid_z_mm_min, m.accel_mm_s2));
-    bool slot_timed = false;  // the hole before was a milled slot's first end
-    for (std::size_t i = 0; i < order.size(); ++i) {
-      const aco::Point2 p = holes[order[i]].center;
-      const gcode::Tool& tool = groups[g].tool;
-      const aco::Hole& h = holes[order[i]];
-      // A milled slot's second end: the slot, timed at its first, cut the way there.
-      const bool slot_second = tool.end_mill && h.slot_end && i > 0 && slot_timed && holes[order[i - 1]].slot_end &&
-                               holes[order[i - 1]].chain == h.chain;
-      if (!slot_second) {
-        st.travel_mm += aco::euclidean(at, p);
-        spend(split.moves_s, xy_move_time(at, p, m));
-      }
-      const bool last = i + 1 == order.size();
-      const bool clear = !last && crosses_clamp(p, holes[order[i + 1]].center, m);
-      const bool retract_initial = !s.retract_to_r || last || clear;
-      if (tool.end_mill && h.slot_end) {
-        // A milled slot: its two ends follow each other; the whole slot is timed at the first.
-        const bool first = !slot_second;
-        slot_timed = first;
-        if (first && i + 1 < order.size()) {
-          const aco::Point2 b = holes[order[i + 1]].center;
-          spend(split.drilling_s, (s.r_plane_mm + gcode::milled_slot_length_mm(h.center, b, h.diameter, tool)) / tool.feed_mm_min * 60.0 +
-                                      rapid_time_s(s.r_plane_mm - tool.depth_mm, m.rapid_z_mm_min, m.accel_mm_s2));
-        }
-      } else {
-        slot_timed = false;
-        spend(split.drilling_s, tool.end_mill ? milled_time_s(tool, h.diameter, s, m, retract_initial)
-                                : m.hit_s > 0 ? m.hit_s
-                                              : cycle_time_s(tool, s, m, retract_initial));
-      }
-      if (i == 0) spend(split.moves_s, rapid_time_s(s.initial_z_mm - s.r_plane_mm, m.rapid_z_mm_min, m.accel_mm_s2));
-      at = p;
-    }
-    spend(split.moves_s, rapid_time_s(100.0, m.rapid_z_mm_min, m.accel_mm_s2));
-    st.tool_time_s.push_back(st.time_s - before);
   }
-  if (options.return_at_end) {
-    const aco::Point2 finish = options.finish.value_or(m.start);
-    st.travel_mm += aco::euclidean(at, finish);
-    spend(split.moves_s, xy_move_time(at, finish, m));
+  if (options.return_at_end) st.travel_mm += aco::euclidean(at, options.finish.value_or(m.start));
+  // The time: the program these orders make, as the control runs it.
+  gcode::ProgramSettings ps = options.program;
+  ps.header_comments.clear();
+  ps.home = options.finish.value_or(m.start);
+  ps.resume_from = 1;
+  std::ostringstream program;
+  gcode::write_program(program, passes_of(holes, groups, orders, m), ps);
+  const gcode::ProgramTime t = gcode::time_program(program.str(), kinematics_of(m, ps.dialect));
+  TimeSplit& split = st.split;
+  split.moves_s = t.moves_s;
+  // A machine with a fixed hit time (a PCB drilling machine's own cycle) drills each hole in it.
+  split.drilling_s = m.hit_s > 0 ? static_cast<double>(drilled) * m.hit_s : t.drilling_s;
+  split.tool_changes_s = static_cast<double>(t.tool_changes) * m.tool_change_s + t.probe_s;
+  split.pauses_s = t.spindle_wait_s;
+  st.time_s = split.total();
+  // Each tool's share: its change and what follows it up to the next (the return home in the last).
+  for (std::size_t g = 0; g < groups.size(); ++g) {
+    const double after = g + 1 < t.per_tool_s.size() ? t.per_tool_s[g + 1] : 0.0;
+    st.tool_time_s.push_back(orders[g]->empty() ? 0.0 : m.tool_change_s + after);
   }
   return st;
 }
@@ -528,12 +455,21 @@ void settle_plan(const aco::HoleSet& holes, PlanResult& result, const PlanOption
 }
 
 std::vector<gcode::ToolPass> to_passes(const aco::HoleSet& holes, const PlanResult& plan, const Machine& machine) {
+  std::vector<const aco::Order*> orders;
+  for (const ToolGroup& g : plan.groups) orders.push_back(&g.optimized);
+  return passes_of(holes, plan.groups, orders, machine);
+}
+
+std::vector<gcode::ToolPass> passes_of(const aco::HoleSet& holes, const std::vector<ToolGroup>& groups,
+                                       const std::vector<const aco::Order*>& orders, const Machine& machine) {
   std::vector<gcode::ToolPass> passes;
   std::size_t index = 0;
-  for (const ToolGroup& g : plan.groups) {
+  for (std::size_t k = 0; k < groups.size(); ++k) {
+    const ToolGroup& g = groups[k];
+    const aco::Order& order = *orders[k];
     gcode::ToolPass pass;
     pass.tool = g.tool;
-    for (aco::HoleIndex h : g.optimized) {
+    for (aco::HoleIndex h : order) {
       pass.holes.push_back(holes[h].center);
       pass.index.push_back(++index);
       if (g.tool.end_mill) pass.mill_diameter.push_back(holes[h].diameter);
@@ -541,9 +477,9 @@ std::vector<gcode::ToolPass> to_passes(const aco::HoleSet& holes, const PlanResu
     // A milled slot's two ends follow each other (a chain keeps its order): milled as one.
     if (g.tool.end_mill) {
       pass.slot_to_next.assign(pass.holes.size(), false);
-      for (std::size_t i = 0; i + 1 < g.optimized.size();) {
-        const aco::Hole& a = holes[g.optimized[i]];
-        const aco::Hole& b = holes[g.optimized[i + 1]];
+      for (std::size_t i = 0; i + 1 < order.size();) {
+        const aco::Hole& a = holes[order[i]];
+        const aco::Hole& b = holes[order[i + 1]];
         const bool pair = a.slot_end && b.slot_end && a.chain == b.chain;
         if (pair) pass.slot_to_next[i] = true;
         i += pair ? 2 : 1;

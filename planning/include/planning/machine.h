@@ -11,6 +11,7 @@
 
 #include "aco/geometry.h"
 #include "aco/hole_set.h"
+#include "gcode/motion_time.h"
 #include "gcode/program.h"
 
 namespace planning {
@@ -41,6 +42,11 @@ struct Machine {
   double rapid_z_mm_min = 25400.0;
   double accel_mm_s2 = 2500.0;       // per axis
   bool linear_rapids = false;        // HAAS G00 moves each axis at its own rate ("dogleg")
+  // How fast the control takes a corner (GRBL $11: the junction deviation;
+  // GRBL's default 0.01 mm where the profile says none) and how finely it
+  // cuts arcs into chords ($12, default 0.002 mm): issue 66's time model.
+  double junction_deviation_mm = 0.01;
+  double arc_tolerance_mm = 0.002;
   double tool_change_s = 4.2;        // chip to chip
   int max_rpm = 8100;                // spindle limit; generated tools stay under it
   aco::Point2 start{0.0, 0.0};       // where the spindle is at the start and returns to (program XY)
@@ -91,5 +97,8 @@ void check_travel(const aco::HoleSet& holes, const Machine& machine, const std::
 
 // Time of one rapid move of `distance` mm at `rate_mm_min` with acceleration `accel` (trapezoidal profile).
 double rapid_time_s(double distance, double rate_mm_min, double accel_mm_s2);
+
+// The machine's motion as the program timer (gcode/motion_time.h) takes it, for a program in `dialect`.
+gcode::Kinematics kinematics_of(const Machine& machine, gcode::Dialect dialect);
 
 }  // namespace planning

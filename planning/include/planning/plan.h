@@ -146,7 +146,16 @@ void settle_plan(const aco::HoleSet& holes, PlanResult& result, const PlanOption
 // G98 retracts the machine's clamps need).
 std::vector<gcode::ToolPass> to_passes(const aco::HoleSet& holes, const PlanResult& plan, const Machine& machine);
 
-// XY travel and time of drilling the groups in the given orders.
+// The passes of the groups drilled in the given orders.
+std::vector<gcode::ToolPass> passes_of(const aco::HoleSet& holes, const std::vector<ToolGroup>& groups,
+                                       const std::vector<const aco::Order*>& orders, const Machine& machine);
+
+// XY travel and time of drilling the groups in the given orders: the time
+// of the program acodrill writes for them, as the machine's control runs it
+// (gcode::time_program with the machine's kinematics, issue 66), with each
+// tool change at the profile's tool_change_s and each probe at its feed
+// (tool changes), the spindle's run-up dwells (pauses), and on a machine
+// with a fixed hit time (hit_s) each drilled hole at it.
 RouteStats route_stats(const aco::HoleSet& holes, const std::vector<ToolGroup>& groups,
                        const std::vector<const aco::Order*>& orders, const PlanOptions& options);
 
