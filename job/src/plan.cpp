@@ -242,7 +242,7 @@ void PlanJob::Impl::report(const aco::Progress& p) {
     out.holes = g.input_order.size();
   }
   out.iteration = p.iteration;
-  out.iterations = r.plan.solver.iterations;
+  out.iterations = router ? router->group_iterations() : r.plan.solver.iterations;
   out.best_length = p.best_length;
   out.elapsed_s = now;
   out.improved = improved;

@@ -297,6 +297,8 @@ std::vector<aco::Order> GroupRouter::orders_so_far() const {
   return out;
 }
 
+int GroupRouter::group_iterations() const { return current_ ? current_->run.params().iterations : 0; }
+
 std::size_t GroupRouter::group() const { return std::min(next_, result_.groups.size()); }
 void order_groups(const aco::HoleSet& holes, PlanResult& result, const PlanOptions& options) {
   GroupRouter(holes, result, options).advance();

@@ -116,8 +116,9 @@ class GroupRouter {
   // Ends the routing now: the group under way keeps its best route so far,
   // the groups after it their first (nearest neighbour, improved).
   void stop();
-  // The group being routed (groups().size() once all are).
+  // The group being routed (groups().size() once all are), and its colony's iteration budget (0: none under way).
   std::size_t group() const;
+  int group_iterations() const;
   // Each group's order as it stands: routed, the best so far, or (not yet
   // begun) its input order; to draw the route while it improves.
   std::vector<aco::Order> orders_so_far() const;
