@@ -19,7 +19,7 @@ namespace gcode {
 namespace {
 
 using Vec = std::array<double, 3>;
-enum class Share { Moves, Drilling, Probe };
+enum class Share { Moves, Drilling };
 
 struct Block {
   double length = 0.0, nominal = 0.0, accel = 0.0;  // mm, mm/s, mm/s^2
@@ -163,7 +163,7 @@ class Planner {
   }
 
   void spend(Share share, double t) {
-    (share == Share::Moves ? out_.moves_s : share == Share::Drilling ? out_.drilling_s : out_.probe_s) += t;
+    (share == Share::Moves ? out_.moves_s : out_.drilling_s) += t;
     tool_s_ += t;
   }
 

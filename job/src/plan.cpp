@@ -6,7 +6,6 @@
 #include "job/plan.h"
 
 #include <chrono>
-#include <climits>
 #include <cmath>
 #include <map>
 #include <new>
@@ -20,7 +19,6 @@
 #include "job/svg.h"
 #include "job/verify.h"
 #include "pipeline.h"
-#include "planning/reorder.h"
 
 namespace job {
 

@@ -182,14 +182,6 @@ bool crosses_clamp(aco::Point2 a, aco::Point2 b, const Machine& machine) {
   return false;
 }
 
-double rapid_time_s(double distance, double rate_mm_min, double accel) {
-  if (distance <= 0.0) return 0.0;
-  const double v = rate_mm_min / 60.0;
-  // Trapezoid: accelerate to v, cruise, brake; a short move never reaches v (triangle).
-  if (distance >= v * v / accel) return distance / v + v / accel;
-  return 2.0 * std::sqrt(distance / accel);
-}
-
 gcode::Kinematics kinematics_of(const Machine& m, gcode::Dialect dialect) {
   gcode::Kinematics k;
   k.rate_mm_min[0] = k.rate_mm_min[1] = m.rapid_xy_mm_min;

@@ -95,9 +95,6 @@ std::string machine_class_names();
 // positions too when the profile gives the work offset. Throws formats::InputError.
 void check_travel(const aco::HoleSet& holes, const Machine& machine, const std::string& source);
 
-// Time of one rapid move of `distance` mm at `rate_mm_min` with acceleration `accel` (trapezoidal profile).
-double rapid_time_s(double distance, double rate_mm_min, double accel_mm_s2);
-
 // The machine's motion as the program timer (gcode/motion_time.h) takes it, for a program in `dialect`.
 gcode::Kinematics kinematics_of(const Machine& machine, gcode::Dialect dialect);
 
