@@ -447,17 +447,19 @@ TEST(solver_test, focused_colony_improves_on_the_reference_and_stays_a_route) {
   for (std::size_t i = 1; i < s.trace.size(); ++i) EXPECT_LT(s.trace[i].best_length, s.trace[i - 1].best_length);
 }
 
-// --local-search auto: LKH's 5-opt step from 3000 to 20 000 holes, where it
-// measured better, 3-opt below and above; a search asked for is kept.
-TEST(solver_test, auto_local_search_is_5opt_from_3000_to_20000_holes) {
+// --local-search auto: LKH's 5-opt step from 3000 holes while the candidates
+// are alpha-nearest (to 200 000), where it measured better, 3-opt below and
+// above; a search asked for is kept.
+TEST(solver_test, auto_local_search_is_5opt_from_3000_to_200000_holes) {
   aco::Params p;
   ASSERT_EQ(p.local_search, aco::LocalSearch::Auto);
   EXPECT_EQ(aco::resolve(p, 2999).local_search, aco::LocalSearch::ThreeOpt);
   EXPECT_EQ(aco::resolve(p, 3000).local_search, aco::LocalSearch::FiveOpt);
-  EXPECT_EQ(aco::resolve(p, 20000).local_search, aco::LocalSearch::FiveOpt);
-  EXPECT_EQ(aco::resolve(p, 20001).local_search, aco::LocalSearch::ThreeOpt);
+  EXPECT_EQ(aco::resolve(p, 36985).local_search, aco::LocalSearch::FiveOpt);
+  EXPECT_EQ(aco::resolve(p, 200000).local_search, aco::LocalSearch::FiveOpt);
+  EXPECT_EQ(aco::resolve(p, 200001).local_search, aco::LocalSearch::ThreeOpt);
   p.local_search = aco::LocalSearch::FiveOpt;
-  EXPECT_EQ(aco::resolve(p, 100000).local_search, aco::LocalSearch::FiveOpt);
+  EXPECT_EQ(aco::resolve(p, 1000).local_search, aco::LocalSearch::FiveOpt);
   p.local_search = aco::LocalSearch::ThreeOpt;
   EXPECT_EQ(aco::resolve(p, 5000).local_search, aco::LocalSearch::ThreeOpt);
 }

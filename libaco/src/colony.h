@@ -124,11 +124,19 @@ constexpr std::size_t kManyAntsFrom = 10000;
 // curve numbers made the first route 4.9 % longer (nearest neighbour, then
 // local search in windows), still 0.3 % after 40 s.
 constexpr std::size_t kCurveOrderFrom = 16384;
-// From kFiveOptFrom to kFiveOptTo holes --local-search auto (the default) is
-// LKH's 5-opt step; below and above, 3-opt with deeper steps (resolve()
-// gives the measurements).
+// From kFiveOptFrom holes to kAlphaLimit (while the candidates are
+// alpha-nearest) --local-search auto (the default) is LKH's 5-opt step;
+// below and above, 3-opt with deeper steps (resolve() gives the
+// measurements).
 constexpr std::size_t kFiveOptFrom = 3000;
-constexpr std::size_t kFiveOptTo = 20000;
+// The 5-opt step pays its gains in the ascent's penalised costs up to this
+// many holes, in plain lengths above, where the ascent is cut short (27
+// steps at 36 985 holes against 100 at pla7397's 7397) and its penalties
+// misled the search: on five copies of pla7397 side by side (36 985 holes,
+// 60 s, seeds 1-3) penalised 0.394 0.325 0.575 %, plain 0.172 0.296
+// 0.199 % (3-opt 0.341 0.330 0.392 %); up to here the penalties won
+// (d15112 at 64 s, seeds 1 and 2: 0.066 0.072 % against 0.096 0.107 %).
+constexpr std::size_t kPenalisedTo = 20000;
 constexpr double kJumpyOrder = 4.0;
 constexpr int kRestartAfter = 300;
 constexpr int kRestartKicks = 200;

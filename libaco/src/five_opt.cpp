@@ -10,7 +10,8 @@
 // end t10 (Lin-Kernighan's chain), up to kFiveOptSteps steps; a chain that
 // never closes with a gain is undone. Edges a step added are not removed
 // later in its chain, nor removed ones added back. Gains are paid in the
-// ascent's penalised costs where the candidates carry them (candidates.h);
+// ascent's penalised costs where the candidates carry them (candidates.h; up
+// to kPenalisedTo holes, colony.h);
 // what the route loses is summed in lengths.
 //
 // `--local-search 5opt` (and auto from kFiveOptFrom holes) runs it after

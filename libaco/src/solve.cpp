@@ -18,7 +18,7 @@ namespace aco {
 
 using detail::kCurveOrderFrom;
 using detail::kFiveOptFrom;
-using detail::kFiveOptTo;
+using detail::kAlphaLimit;
 using detail::kJumpyOrder;
 using detail::kManyAntsFrom;
 using detail::uses_alpha_lists;
@@ -62,14 +62,14 @@ Params resolve(const Params& in, std::size_t n) {
   // 3-opt's (fl1400: 37 iterations in 5 s against 802) that the colony
   // lost more than the step found (seeds 1-3: d1291 at 5 s 0.00 -> 0.71 %,
   // fl1400 0.68 -> 1.01 %, pcb1173 0.00 -> 0.01 %, u724 at 2 s 0.05 ->
-  // 0.09 %; d493 at 1 s 0.21 -> 0.01 %). Above kFiveOptTo, 3-opt again:
-  // on five copies of pla7397 (36 985 holes, 60 s, seeds 1-3) 5-opt gave
-  // 0.394 0.325 0.575 % against 0.341 0.330 0.392 % (the scale table at
-  // c455ce2), though on uniform random holes it gained (33 000 at 30 s
-  // 0.66 -> 0.56 %, 100 000 at 60 s 0.65 -> 0.54 %, medians of 3); without
-  // the penalties it gave 0.225 0.485 0.292 % there, so they are the lead.
+  // 0.09 %; d493 at 1 s 0.21 -> 0.01 %). Above 20 000 holes, paid in plain
+  // lengths (kPenalisedTo), it wins every row of the scale table (60 s, 30 s
+  // for 33 000; seeds 1-3, 3-opt at c455ce2 -> 5-opt at 78c1239, medians):
+  // 33 000 uniform holes 0.66 -> 0.566 %, five copies of pla7397 0.34 ->
+  // 0.199 %, 100 000 uniform holes 0.65 -> 0.516 %. Above kAlphaLimit the
+  // candidates are the plain nearest and nothing was measured: 3-opt stays.
   if (p.local_search == LocalSearch::Auto) {
-    p.local_search = n >= kFiveOptFrom && n <= kFiveOptTo ? LocalSearch::FiveOpt : LocalSearch::ThreeOpt;
+    p.local_search = n >= kFiveOptFrom && n <= kAlphaLimit ? LocalSearch::FiveOpt : LocalSearch::ThreeOpt;
   }
   const bool focused = p.algorithm == Algorithm::FocusedAcs;
   // (Measured: ACS with local search beats this MMAS at every TSPLIB size we

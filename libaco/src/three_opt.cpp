@@ -1,5 +1,5 @@
 // Sequential 3-opt with deeper steps, the search from a hole below
-// kFiveOptFrom holes and above kFiveOptTo (--local-search 3opt): the best
+// kFiveOptFrom holes and above kAlphaLimit (--local-search 3opt): the best
 // 3-opt step from t1 by Lin and Kernighan's gain criterion, made when it
 // closes with a gain; when none does, deepen() chains whole 3-opt steps from
 // the kDeepen most promising, as LKH chains its basis moves. 2-opt, Or-opt
