@@ -133,7 +133,7 @@ int main(int argc, char** argv) {
   cli.add_option("--iterations", iterations, "Iteration counts (default: 300 or until the time limit)")->delimiter(',');
   cli.add_option("--threads", threads, "Thread counts (default: 1 and all cores)")->delimiter(',');
   cli.add_option("--time-limit", time_limits, "Time limits per run in seconds (0 = none)")->delimiter(',');
-  cli.add_option("--local-search", local_search, "none, 2opt, 2opt+oropt, 3opt, 5opt, auto (default auto: 5opt from 3000 to 200000 holes, else 3opt; 3opt: 2-opt, Or-opt and 3-opt with deeper Lin-Kernighan steps; 5opt: LKH's sequential 5-opt step, on penalised costs, in place of the 3-opt one)")->delimiter(',');
+  cli.add_option("--local-search", local_search, "none, 2opt, 2opt+oropt, 3opt, 5opt, auto (default auto: 5opt from 3000 to 200000 holes, else 3opt; 3opt: 2-opt, Or-opt and 3-opt with deeper Lin-Kernighan steps; 5opt: LKH's sequential 5-opt step, on penalised costs up to 20000 holes and plain lengths above, in place of the 3-opt one)")->delimiter(',');
   cli.add_option("--seeds", seeds, "Runs per cell, seeds 1..N (default 1)")->check(CLI::Range(1, 100000));
   cli.add_option("--first-seed", first_seed,
                  "Seeds K..K+N-1 instead of 1..N: one seed at a time, between other runs")
