@@ -12,7 +12,9 @@
 #include <set>
 
 #include "aco/baselines.h"
+#include "aco/solve.h"
 #include "candidates.h"
+#include "colony.h"
 #include "flip_overlay.h"
 #include "local_search.h"
 #include "recombine.h"
@@ -371,6 +373,24 @@ TEST(local_search_test, five_opt_on_penalised_costs_shortens_three_opt_optima) {
       EXPECT_EQ(ls.failed_audits(), 0u) << "moves that did not shorten the route";
     }
   }
+}
+
+// The 5-opt step pays its gains in the ascent's penalised costs up to
+// kPenalisedTo holes and in plain lengths above (where the ascent is cut
+// short), and no other search reads the penalties.
+TEST(local_search_test, penalised_costs_are_kept_for_the_5opt_step_up_to_20000_holes_only) {
+  using aco::LocalSearch;
+  using aco::detail::uses_penalised_costs;
+  EXPECT_TRUE(uses_penalised_costs(3000, LocalSearch::FiveOpt));
+  EXPECT_TRUE(uses_penalised_costs(20000, LocalSearch::FiveOpt));
+  EXPECT_FALSE(uses_penalised_costs(20001, LocalSearch::FiveOpt));
+  EXPECT_FALSE(uses_penalised_costs(100000, LocalSearch::FiveOpt));
+  EXPECT_FALSE(uses_penalised_costs(5000, LocalSearch::ThreeOpt));
+  EXPECT_FALSE(uses_penalised_costs(5000, LocalSearch::Auto));
+  // What auto resolves to, above the bound: the 5-opt step, on plain lengths.
+  const aco::Params resolved = aco::resolve(aco::Params{}, 36985);
+  EXPECT_EQ(resolved.local_search, LocalSearch::FiveOpt);
+  EXPECT_FALSE(uses_penalised_costs(36985, resolved.local_search));
 }
 
 TEST(local_search_test, alpha_candidates_are_nearest_holes_and_hold_the_spanning_tree_edges) {

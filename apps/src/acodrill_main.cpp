@@ -38,7 +38,7 @@ void add_solver_options(CLI::App* cmd, job::SolverSettings& a) {
   cmd->add_option("--alpha", a.alpha, "Pheromone weight (default 1)")->check(CLI::Range(0.0, 100.0));
   cmd->add_option("--beta", a.beta, "Distance weight (default: as 4, mmas/acs 2)")->check(CLI::Range(0.0, 100.0));
   cmd->add_option("--rho", a.rho, "Evaporation rate in (0,1] (default: as 0.5, mmas 0.2, acs 0.1)");
-  cmd->add_option("--local-search", a.local_search, "none | 2opt | 2opt+oropt | 3opt | 5opt | auto (default auto: 5opt from 3000 to 200000 holes, else 3opt, each where it measured better; 3opt: 2-opt, Or-opt, and sequential 3-opt moves that go deeper, Lin-Kernighan style, when none gains; 5opt: 2-opt, Or-opt, then LKH's sequential 5-opt step on the ascent's penalised costs (plain lengths above 20000 holes), chained when none gains)");
+  cmd->add_option("--local-search", a.local_search, "none | 2opt | 2opt+oropt | 3opt | 5opt | auto (default auto: 5opt from 3000 to 200000 holes, else 3opt; 3opt: 2-opt, Or-opt, and sequential 3-opt moves that go deeper, Lin-Kernighan style, when none gains; 5opt: 2-opt, Or-opt, then LKH's sequential 5-opt step on the ascent's penalised costs (plain lengths above 20000 holes), chained when none gains)");
   cmd->add_option("--focus-edges", a.focus_edges,
                   "focused: new edges an ant makes on the best route before it copies the rest (default 16)")
       ->check(CLI::Range(1, 1000000));

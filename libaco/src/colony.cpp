@@ -14,7 +14,7 @@ Colony::Colony(const Problem& problem, const Params& params, Team& team, const C
     Candidates nearest = detail::joined_nearest(space_, kAlphaFrom, *team_);
     std::vector<double>().swap(nearest.length);  // not read by alpha_candidates: 13 MB less at 100 000 holes
     cand_ = detail::alpha_candidates(space_, nearest, p_.candidates, ascent_iterations(n_, p_.time_limit_s), *team_,
-                                     p_.local_search == LocalSearch::FiveOpt && n_ <= kPenalisedTo);
+                                     uses_penalised_costs(n_, p_.local_search));
   } else {
     cand_ = detail::build_candidates(space_, p_.candidates, *team_);
   }

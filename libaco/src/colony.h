@@ -137,6 +137,11 @@ constexpr std::size_t kFiveOptFrom = 3000;
 // 0.199 % (3-opt 0.341 0.330 0.392 %); up to here the penalties won
 // (d15112 at 64 s, seeds 1 and 2: 0.066 0.072 % against 0.096 0.107 %).
 constexpr std::size_t kPenalisedTo = 20000;
+// Whether alpha_candidates() keeps the ascent's penalties and the rows sorted
+// by them: only the 5-opt step reads them, and only up to kPenalisedTo holes.
+inline bool uses_penalised_costs(std::size_t holes, LocalSearch local_search) {
+  return local_search == LocalSearch::FiveOpt && holes <= kPenalisedTo;
+}
 constexpr double kJumpyOrder = 4.0;
 constexpr int kRestartAfter = 300;
 constexpr int kRestartKicks = 200;

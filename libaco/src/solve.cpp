@@ -64,9 +64,9 @@ Params resolve(const Params& in, std::size_t n) {
   // fl1400 0.68 -> 1.01 %, pcb1173 0.00 -> 0.01 %, u724 at 2 s 0.05 ->
   // 0.09 %; d493 at 1 s 0.21 -> 0.01 %). Above 20 000 holes, paid in plain
   // lengths (kPenalisedTo), it wins every row of the scale table (60 s, 30 s
-  // for 33 000; seeds 1-3, 3-opt at c455ce2 -> 5-opt at 78c1239, medians):
-  // 33 000 uniform holes 0.66 -> 0.566 %, five copies of pla7397 0.34 ->
-  // 0.199 %, 100 000 uniform holes 0.65 -> 0.516 %. Above kAlphaLimit the
+  // for 33 000; seeds 1-3, 3-opt at c455ce2 -> 5-opt at dad5d2d, medians):
+  // 33 000 uniform holes 0.66 -> 0.56 %, five copies of pla7397 0.34 ->
+  // 0.20 %, 100 000 uniform holes 0.65 -> 0.51 % (docs/benchmarks.md). Above kAlphaLimit the
   // candidates are the plain nearest and nothing was measured: 3-opt stays.
   if (p.local_search == LocalSearch::Auto) {
     p.local_search = n >= kFiveOptFrom && n <= kAlphaLimit ? LocalSearch::FiveOpt : LocalSearch::ThreeOpt;

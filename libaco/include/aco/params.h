@@ -24,8 +24,9 @@ enum class Algorithm {
 
 // ThreeOpt adds sequential 3-opt moves to 2-opt and Or-opt; FiveOpt adds
 // LKH's sequential 5-opt step instead. Auto, the default, is FiveOpt from
-// 3000 to 200 000 holes and ThreeOpt below and above, each where it
-// measured better (resolve(), libaco/src/solve.cpp).
+// 3000 to 200 000 holes, where it measured better, and ThreeOpt below
+// (measured better there) and above (not measured; resolve(),
+// libaco/src/solve.cpp).
 enum class LocalSearch { None, TwoOpt, TwoOptOrOpt, ThreeOpt, FiveOpt, Auto };
 
 struct Progress {
