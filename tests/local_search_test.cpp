@@ -604,3 +604,86 @@ TEST(local_search_test, quadrant_neighbours_are_the_nearest_in_each_quadrant_and
 }
 
 }  // namespace
+
+// The colony's kick: a true double bridge, so exactly four edges of the route
+// are new (three cuts, a segment exchange, would be a 3-opt move the search
+// undoes), the seeds are their ends, and an open path keeps V at position 0.
+TEST(local_search_test, walk_double_bridge_makes_four_new_edges_and_seeds_their_ends) {
+  for (aco::Shape shape : {aco::Shape::ClosedTour, aco::Shape::OpenPath}) {
+    for (bool clustered : {false, true}) {
+      const aco::Problem p = random_problem(600, clustered ? 3u : 4u, shape, clustered);
+      const aco::detail::Space space(p);
+      const aco::detail::Candidates cand = aco::detail::build_candidates(space, 8);
+      const std::vector<HoleIndex> start = start_route(space, p, 2);
+      const auto edges_of = [](const std::vector<HoleIndex>& r) {
+        std::set<std::pair<HoleIndex, HoleIndex>> e;
+        for (std::size_t i = 0; i < r.size(); ++i) {
+          const HoleIndex a = r[i], b = r[(i + 1) % r.size()];
+          e.insert({std::min(a, b), std::max(a, b)});
+        }
+        return e;
+      };
+      const auto before = edges_of(start);
+      int kicked = 0, four_new = 0;
+      for (std::uint64_t k = 1; k <= 20; ++k) {
+        SCOPED_TRACE(::testing::Message() << "shape " << int(shape) << " clustered " << clustered << " kick " << k);
+        std::vector<HoleIndex> route = start;
+        std::vector<HoleIndex> seeds;
+        aco::detail::Rng rng(7, k, 0);
+        aco::detail::walk_double_bridge(space, cand, route, rng, seeds);
+        expect_route(space, route);
+        if (seeds.empty()) {
+          EXPECT_EQ(route, start);
+          continue;
+        }
+        ++kicked;
+        std::set<std::pair<HoleIndex, HoleIndex>> fresh;
+        for (const auto& e : edges_of(route)) {
+          if (before.count(e) == 0) fresh.insert(e);
+        }
+        // Four, but for two single-hole stretches side by side, whose join
+        // comes back the other way round.
+        ASSERT_GE(fresh.size(), 3u);
+        ASSERT_LE(fresh.size(), 4u);
+        if (fresh.size() == 4) ++four_new;
+        EXPECT_EQ(seeds.size(), 8u);
+        const std::set<HoleIndex> seeded(seeds.begin(), seeds.end());
+        for (const auto& [a, b] : fresh) EXPECT_TRUE(seeded.count(a) == 1 && seeded.count(b) == 1);
+      }
+      EXPECT_GE(kicked, 18);
+      EXPECT_GE(four_new, 15);
+    }
+  }
+}
+
+// LKH's restricted search: a focused ant's 3-opt or 5-opt step starts only by
+// taking out an edge the reference lacks. Searched against itself a route
+// gets no such step; unrestricted, the same 2-opt and Or-opt optimum gets shorter.
+TEST(local_search_test, a_search_restricted_to_a_route_starts_no_step_from_its_edges) {
+  for (Moves moves : {Moves::ThreeOpt, Moves::FiveOpt}) {
+    const aco::Problem p = random_problem(2000, 9, aco::Shape::ClosedTour, false);
+    const aco::detail::Space space(p);
+    const aco::detail::Candidates cand = aco::detail::build_candidates(space, 8);
+    std::vector<HoleIndex> reference = start_route(space, p, 2);
+    aco::detail::LocalSearcher ls(space, cand);
+    // Passes until one changes nothing (don't-look bits can leave a move).
+    for (int pass = 0; pass < 50; ++pass) {
+      ls.improve(reference, Moves::OrOpt);
+      if (ls.gain() == 0.0) break;
+    }
+    std::vector<std::uint32_t> pos(reference.size());
+    for (std::size_t i = 0; i < reference.size(); ++i) pos[reference[i]] = static_cast<std::uint32_t>(i);
+    std::vector<HoleIndex> all(reference.begin(), reference.end());
+
+    std::vector<HoleIndex> restricted = reference;
+    ls.restrict_to(&reference, &pos);
+    ls.improve_from(restricted, moves, all);
+    EXPECT_EQ(restricted, reference) << "moves " << int(moves);
+    EXPECT_EQ(ls.gain(), 0.0);
+
+    std::vector<HoleIndex> free = reference;
+    ls.restrict_to(nullptr, nullptr);
+    ls.improve_from(free, moves, all);
+    EXPECT_GT(ls.gain(), 0.0) << "moves " << int(moves);
+  }
+}

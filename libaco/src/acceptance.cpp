@@ -1,16 +1,20 @@
 // Acceptance and kicks, for the focused colony after each round: the
 // reference route moves to the round's best when that is better or as good
 // (across a plateau); when no ant has improved it for kKickAfter rounds, the
-// best since the last restart is kicked by a double bridge within kKickSpan
-// consecutive holes, repaired by local search around the bridge's new edges,
-// and becomes the reference even if worse. Long stuck, the colony restarts
-// instead (restarts.cpp).
+// best since the last restart is kicked by a double bridge near a long edge
+// (walk_double_bridge), repaired by local search around the bridge's new
+// edges, and becomes the reference even if worse. Long stuck, the colony
+// restarts instead (restarts.cpp).
+#include <limits>
+
 #include "colony.h"
 
 namespace aco::detail {
 
-// A double bridge within kKickSpan consecutive positions of r: blocks
-// A B C D -> A C B D; appends the ends of its three new edges to seeds.
+// The restarts' shake (restarts.cpp): within kKickSpan consecutive positions
+// of r, blocks A B C D -> A C B D, three cuts, so a segment exchange (a pure
+// 3-opt move) more than a double bridge; appends the ends of its three new
+// edges to seeds.
 void Colony::double_bridge(std::vector<HoleIndex>& r, Rng& krng, std::vector<HoleIndex>& seeds) const {
   const std::size_t mm = r.size();
   const std::size_t span = std::min<std::size_t>(kKickSpan, mm - 2);
@@ -24,6 +28,65 @@ void Colony::double_bridge(std::vector<HoleIndex>& r, Rng& krng, std::vector<Hol
   std::rotate(r.begin() + static_cast<long>(p1 + 1), r.begin() + static_cast<long>(p2 + 1), r.begin() + static_cast<long>(p3 + 1));
   const std::size_t mid = p1 + (p3 - p2);  // where the swapped blocks now meet
   for (const std::size_t q : {p1, p1 + 1, mid, mid + 1, p3, (p3 + 1) % mm}) seeds.push_back(r[q]);
+}
+
+// LKH's kick (its KSwapKick with K = 4, from a long edge and by walks): a
+// true double bridge, four cuts, stretches S1 S2 S3 S4 of r back as
+// S1 S4 S3 S2, none turned, so all four joins are new and no sequential move
+// undoes it. The first cut after the worst of 10 + n / 1000 random holes
+// (its route edge longest against its nearest candidate), each other after
+// the last hole a 50-step random walk over the candidate lists reaches from
+// the cut before: near on the plate, anywhere along the route. Appends the
+// ends of the four new edges to seeds (nothing when the cuts did not come
+// out four).
+void walk_double_bridge(const Space& space, const Candidates& cand, std::vector<HoleIndex>& r, Rng& rng,
+                        std::vector<HoleIndex>& seeds) {
+  const HoleIndex n = space.holes();
+  const std::size_t m = r.size();
+  if (m < 16) return;
+  std::vector<std::uint32_t> pos(m);
+  for (std::size_t i = 0; i < m; ++i) pos[r[i]] = static_cast<std::uint32_t>(i);
+  const auto succ = [&](HoleIndex h) { return r[(pos[h] + 1) % m]; };
+  const auto cuttable = [&](HoleIndex h) { return h < n && succ(h) < n; };  // neither end V
+  HoleIndex cut_at[4];
+  cut_at[0] = n;
+  double worst = -std::numeric_limits<double>::infinity();
+  for (std::size_t q = 0; q < 10 + n / 1000; ++q) {
+    const HoleIndex h = static_cast<HoleIndex>(rng.below(n));
+    if (!cuttable(h)) continue;
+    const double excess = space.d(h, succ(h)) - cand.lengths_of(h)[0];
+    if (excess > worst) worst = excess, cut_at[0] = h;
+  }
+  if (cut_at[0] == n) return;
+  const int width = std::min(cand.k, 5);
+  if (width < 1) return;
+  for (int c = 1; c < 4; ++c) {
+    HoleIndex from = cut_at[c - 1], came_from = n, reached = n;
+    for (int step = 0; step < 50; ++step) {
+      const HoleIndex h = cand.of(from)[rng.below(static_cast<std::uint32_t>(width))];
+      if (h == came_from || std::find(cut_at, cut_at + c, h) != cut_at + c) continue;
+      came_from = from;
+      from = h;
+      if (cuttable(h)) reached = h;
+    }
+    if (reached == n) return;
+    cut_at[c] = reached;
+  }
+  std::size_t cut[4];
+  for (int c = 0; c < 4; ++c) cut[c] = pos[cut_at[c]];
+  std::sort(cut, cut + 4);
+  const auto at = [&](std::size_t p) { return r.begin() + static_cast<long>(p); };
+  std::vector<HoleIndex> out;
+  out.reserve(m);
+  out.insert(out.end(), at(cut[0] + 1), at(cut[1] + 1));  // S1
+  out.insert(out.end(), at(cut[3] + 1), r.end());         // S4, to the array's end
+  out.insert(out.end(), r.begin(), at(cut[0] + 1));       // and from its start
+  out.insert(out.end(), at(cut[2] + 1), at(cut[3] + 1));  // S3
+  out.insert(out.end(), at(cut[1] + 1), at(cut[2] + 1));  // S2
+  // An open path's V back at position 0: the same cycle, turned round.
+  if (space.open()) std::rotate(out.begin(), std::find(out.begin(), out.end(), n), out.end());
+  for (const std::size_t c : cut) seeds.insert(seeds.end(), {r[c], r[(c + 1) % m]});
+  r.swap(out);
 }
 
 void Colony::accept_or_kick(const std::vector<HoleIndex>*& ib_route, double& ib_len, bool& ib_measured, bool ib_plateau) {
@@ -63,7 +126,7 @@ void Colony::accept_or_kick(const std::vector<HoleIndex>*& ib_route, double& ib_
     } else {
       r = run_.restart_best;  // not a wandering reference
       std::vector<HoleIndex> seeds;
-      double_bridge(r, krng, seeds);
+      walk_double_bridge(space_, cand_, r, krng, seeds);
       shaken = !seeds.empty();
       if (shaken) kick_searcher_->improve_from(r, run_.moves, seeds);
     }

@@ -87,14 +87,17 @@ inline int ascent_iterations(std::size_t holes, double time_limit_s) {
 // and local search can turn them into an improvement.
 constexpr double kDeviate = 0.2;
 // After this many iterations in which no ant improved the reference, the best
-// route is kicked by a double bridge within kKickSpan consecutive holes.
+// route is kicked by a double bridge near one of its long edges
+// (walk_double_bridge; issue 67: before, three cuts within kKickSpan
+// consecutive holes, a segment exchange the ants' search undid).
 constexpr int kKickAfter = 30;
 // ACS's local update: tau = (1 - xi) tau + xi tau0 on every edge an ant used.
 constexpr double kWear = 0.1;
 constexpr std::size_t kKickSpan = 50;
 // After this many iterations in which the colony's best since its last
 // restart did not improve (some ten kicks in vain), the colony restarts: the
-// best route so far, shaken by max(kRestartKicks, n / 50) such double bridges
+// best route so far, shaken by max(kRestartKicks, n / 50) three-cut bridges
+// within kKickSpan consecutive holes (Colony::double_bridge)
 // and improved by a whole local search, becomes the reference, on a fresh
 // trail. Without it a run stalled in its first tenth of a second (pcb442 at
 // 1 s: optimal in 8 of 25 seeds; with it 18 of 25; d1291 at 5 s, median of 5
@@ -199,6 +202,12 @@ struct alignas(64) AntRoute {
   bool improves = false;
   detail::RouteDiff diff;
 };
+
+// The kick of a stalled focused colony (acceptance.cpp): a double bridge with
+// four cuts near a long edge of route r, found by random walks over the
+// candidate lists; appends the ends of its four new edges to seeds.
+void walk_double_bridge(const Space& space, const Candidates& cand, std::vector<HoleIndex>& r, Rng& rng,
+                        std::vector<HoleIndex>& seeds);
 
 class Colony {
  public:

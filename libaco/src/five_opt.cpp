@@ -154,7 +154,7 @@ bool LocalSearcher::try_five_opt(HoleIndex t1) {
   KOptSearch<ArrayTour> first(space_, cand_, tour, v, breadth, chain_added_, chain_removed_);
   for (int dir = 0; dir < 2; ++dir) {
     const HoleIndex t2 = next(t1, dir);
-    if (t2 == v) continue;
+    if (t2 == v || restricted(t1, t2)) continue;
     if (first.from(t1, t2, penalised(space_, cand_, t1, t2))) {
       KOptFlips flips;
       kopt_feasible(tour, first.found, &flips);

@@ -89,6 +89,22 @@ class alignas(64) LocalSearcher {
   // holes 1 move in 8 shifted more than 25 000, and those were 98 % of the
   // shifting.
   static constexpr std::size_t kFarShift = 16384;
+  // LKH's restricted search: the 3-opt and 5-opt steps' first removed edge
+  // must not be an edge of `route` (`positions`: each hole's place in it;
+  // both held by the caller, read while searching; null: no restriction).
+  // A focused ant passes the reference: its search starts only by taking out
+  // edges the ant or a move made, as LKH's starts only off its best tour.
+  // 2-opt and Or-opt are not restricted. docs/colony.md has what it measured.
+  void restrict_to(const std::vector<HoleIndex>* route, const std::vector<std::uint32_t>* positions) {
+    restrict_route_ = route;
+    restrict_pos_ = positions;
+  }
+  bool restricted(HoleIndex a, HoleIndex b) const {
+    if (restrict_route_ == nullptr) return false;
+    const std::vector<HoleIndex>& r = *restrict_route_;
+    const std::size_t p = (*restrict_pos_)[a], mm = r.size();
+    return r[p + 1 == mm ? 0 : p + 1] == b || r[p == 0 ? mm - 1 : p - 1] == b;
+  }
   std::size_t failed_audits() const { return failed_audits_; }
   std::size_t audited_searches() const { return audited_searches_; }
 
@@ -220,6 +236,8 @@ class alignas(64) LocalSearcher {
   std::size_t far_shift_ = kFarShift;
   std::size_t array_flip_ = kArrayFlip;
   double gain_ = 0.0;
+  const std::vector<HoleIndex>* restrict_route_ = nullptr;
+  const std::vector<std::uint32_t>* restrict_pos_ = nullptr;
   std::size_t failed_audits_ = 0, audited_searches_ = 0;
 };
 

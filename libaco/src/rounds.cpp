@@ -119,7 +119,11 @@ void Colony::ant(int slot, int worker) {
     // to the first ants, measured worse (d1291 at 5 s: 0.74 % against 0.30 %).
     const int scale = static_cast<int>(rng.below(4));  // as order_ants drew it
     construct_focused(w, rng, std::max(1, (p_.focus_edges << scale) / 2));
-    if (run_.use_ls) run_.searchers[static_cast<std::size_t>(worker)].improve_from(w.route, run_.moves, w.seeds);
+    if (run_.use_ls) {
+      LocalSearcher& ls = run_.searchers[static_cast<std::size_t>(worker)];
+      ls.restrict_to(&ref_route_, &ref_pos_);
+      ls.improve_from(w.route, run_.moves, w.seeds);
+    }
   } else {
     construct(w, rng, run_.acs);
     if (run_.use_ls) run_.searchers[static_cast<std::size_t>(worker)].improve(w.route, run_.moves);

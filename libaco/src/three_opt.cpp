@@ -23,7 +23,7 @@ bool LocalSearcher::try_three_opt(HoleIndex t1) {
   Step best[kDeepen];
   for (int dir = 0; dir < 2; ++dir) {
     const HoleIndex t2 = next(t1, dir);
-    if (t2 == v) continue;
+    if (t2 == v || restricted(t1, t2)) continue;
     ArrayTour tour{*this};
     if (three_opt_step(tour, t1, dir, space_.d(t1, t2), best, kDeepen, cand_.k)) return true;
   }
