@@ -393,6 +393,15 @@ TEST(local_search_test, penalised_costs_are_kept_for_the_5opt_step_up_to_20000_h
   EXPECT_FALSE(uses_penalised_costs(36985, resolved.local_search));
 }
 
+TEST(local_search_test, lkh_stall_answers_are_used_up_to_800_holes_and_from_3000) {
+  EXPECT_TRUE(aco::detail::uses_lkh_stall_answers(10));
+  EXPECT_TRUE(aco::detail::uses_lkh_stall_answers(800));
+  EXPECT_FALSE(aco::detail::uses_lkh_stall_answers(801));
+  EXPECT_FALSE(aco::detail::uses_lkh_stall_answers(2999));
+  EXPECT_TRUE(aco::detail::uses_lkh_stall_answers(3000));
+  EXPECT_TRUE(aco::detail::uses_lkh_stall_answers(1000000));
+}
+
 TEST(local_search_test, alpha_candidates_are_nearest_holes_and_hold_the_spanning_tree_edges) {
   for (unsigned seed = 1; seed <= 3; ++seed) {
     const aco::Problem p = random_problem(400, seed, aco::Shape::ClosedTour, seed == 2);

@@ -126,7 +126,8 @@ void Colony::accept_or_kick(const std::vector<HoleIndex>*& ib_route, double& ib_
     } else {
       r = run_.restart_best;  // not a wandering reference
       std::vector<HoleIndex> seeds;
-      walk_double_bridge(space_, cand_, r, krng, seeds);
+      if (uses_lkh_stall_answers(n_)) walk_double_bridge(space_, cand_, r, krng, seeds);
+      else double_bridge(r, krng, seeds);
       shaken = !seeds.empty();
       if (shaken) kick_searcher_->improve_from(r, run_.moves, seeds);
     }

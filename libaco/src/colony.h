@@ -87,9 +87,10 @@ inline int ascent_iterations(std::size_t holes, double time_limit_s) {
 // and local search can turn them into an improvement.
 constexpr double kDeviate = 0.2;
 // After this many iterations in which no ant improved the reference, the best
-// route is kicked by a double bridge near one of its long edges
-// (walk_double_bridge; issue 67: before, three cuts within kKickSpan
-// consecutive holes, a segment exchange the ants' search undid).
+// route is kicked: by a double bridge near one of its long edges
+// (walk_double_bridge) where uses_lkh_stall_answers(), else by three cuts
+// within kKickSpan consecutive holes (Colony::double_bridge), a segment
+// exchange the ants' search often undoes.
 constexpr int kKickAfter = 30;
 // ACS's local update: tau = (1 - xi) tau + xi tau0 on every edge an ant used.
 constexpr double kWear = 0.1;
@@ -145,6 +146,16 @@ constexpr std::size_t kPenalisedTo = 20000;
 inline bool uses_penalised_costs(std::size_t holes, LocalSearch local_search) {
   return local_search == LocalSearch::FiveOpt && holes <= kPenalisedTo;
 }
+// Whether a stalled focused colony is kicked by the walk double bridge
+// (walk_double_bridge) and a focused ant's 3-opt or 5-opt step is restricted
+// to start off the reference (LocalSearcher::restrict_to), LKH's two answers
+// to runs that stall (issue 67). Measured, 2 threads, seeds 1-5, medians,
+// before -> with: pcb3038 at 15 s 0.048 -> 0.047 %, worst 0.084 -> 0.049 %
+// (seeds 1-20: worst 0.130 -> 0.073 %, 9 -> 3 above 0.06 %); d493 at 1 s
+// 0.20 -> 0.00 %, d657 at 2 s 0.072 -> 0.002 %, u724 at 2 s 0.048 -> 0.005 %.
+// Between, where the ants' 3-opt searches alpha-nearest candidates, they
+// lost: d1291 at 5 s 0.00 -> 0.047 %, pcb1173 at 5 s 0.00 -> 0.007 %.
+inline bool uses_lkh_stall_answers(std::size_t holes) { return holes <= kFullListLimit || holes >= kFiveOptFrom; }
 constexpr double kJumpyOrder = 4.0;
 constexpr int kRestartAfter = 300;
 constexpr int kRestartKicks = 200;

@@ -121,7 +121,7 @@ void Colony::ant(int slot, int worker) {
     construct_focused(w, rng, std::max(1, (p_.focus_edges << scale) / 2));
     if (run_.use_ls) {
       LocalSearcher& ls = run_.searchers[static_cast<std::size_t>(worker)];
-      ls.restrict_to(&ref_route_, &ref_pos_);
+      if (uses_lkh_stall_answers(n_)) ls.restrict_to(&ref_route_, &ref_pos_);
       ls.improve_from(w.route, run_.moves, w.seeds);
     }
   } else {
