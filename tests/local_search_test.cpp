@@ -393,13 +393,15 @@ TEST(local_search_test, penalised_costs_are_kept_for_the_5opt_step_up_to_20000_h
   EXPECT_FALSE(uses_penalised_costs(36985, resolved.local_search));
 }
 
-TEST(local_search_test, lkh_stall_answers_are_used_up_to_800_holes_and_from_3000) {
+TEST(local_search_test, lkh_stall_answers_are_used_up_to_800_holes_and_from_3000_to_10000) {
   EXPECT_TRUE(aco::detail::uses_lkh_stall_answers(10));
   EXPECT_TRUE(aco::detail::uses_lkh_stall_answers(800));
   EXPECT_FALSE(aco::detail::uses_lkh_stall_answers(801));
   EXPECT_FALSE(aco::detail::uses_lkh_stall_answers(2999));
   EXPECT_TRUE(aco::detail::uses_lkh_stall_answers(3000));
-  EXPECT_TRUE(aco::detail::uses_lkh_stall_answers(1000000));
+  EXPECT_TRUE(aco::detail::uses_lkh_stall_answers(10000));
+  EXPECT_FALSE(aco::detail::uses_lkh_stall_answers(10001));
+  EXPECT_FALSE(aco::detail::uses_lkh_stall_answers(100000));
 }
 
 TEST(local_search_test, alpha_candidates_are_nearest_holes_and_hold_the_spanning_tree_edges) {
@@ -612,11 +614,9 @@ TEST(local_search_test, quadrant_neighbours_are_the_nearest_in_each_quadrant_and
   EXPECT_EQ(aco::detail::joined_nearest(uniform_space, 16).list, aco::detail::build_candidates(uniform_space, 16).list);
 }
 
-}  // namespace
-
-// The colony's kick: a true double bridge, so exactly four edges of the route
-// are new (three cuts, a segment exchange, would be a 3-opt move the search
-// undoes), the seeds are their ends, and an open path keeps V at position 0.
+// The colony's kick: a true double bridge, so four edges of the route are new
+// (three cuts, a segment exchange, would be a 3-opt move the search undoes),
+// the seeds are their ends, and an open path keeps V at position 0.
 TEST(local_search_test, walk_double_bridge_makes_four_new_edges_and_seeds_their_ends) {
   for (aco::Shape shape : {aco::Shape::ClosedTour, aco::Shape::OpenPath}) {
     for (bool clustered : {false, true}) {
@@ -696,3 +696,5 @@ TEST(local_search_test, a_search_restricted_to_a_route_starts_no_step_from_its_e
     EXPECT_GT(ls.gain(), 0.0) << "moves " << int(moves);
   }
 }
+
+}  // namespace

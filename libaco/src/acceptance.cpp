@@ -1,8 +1,9 @@
 // Acceptance and kicks, for the focused colony after each round: the
 // reference route moves to the round's best when that is better or as good
 // (across a plateau); when no ant has improved it for kKickAfter rounds, the
-// best since the last restart is kicked by a double bridge near a long edge
-// (walk_double_bridge), repaired by local search around the bridge's new
+// best since the last restart is kicked by a double bridge (near a long edge,
+// walk_double_bridge, where uses_lkh_stall_answers(); else within kKickSpan
+// consecutive holes), repaired by local search around the bridge's new
 // edges, and becomes the reference even if worse. Long stuck, the colony
 // restarts instead (restarts.cpp).
 #include <limits>
@@ -11,10 +12,10 @@
 
 namespace aco::detail {
 
-// The restarts' shake (restarts.cpp): within kKickSpan consecutive positions
-// of r, blocks A B C D -> A C B D, three cuts, so a segment exchange (a pure
-// 3-opt move) more than a double bridge; appends the ends of its three new
-// edges to seeds.
+// The restarts' shake (restarts.cpp), and the kick where the walk bridge is
+// not used: within kKickSpan consecutive positions of r, blocks A B C D ->
+// A C B D, three cuts, so a segment exchange (a pure 3-opt move) more than a
+// double bridge; appends the ends of its three new edges to seeds.
 void Colony::double_bridge(std::vector<HoleIndex>& r, Rng& krng, std::vector<HoleIndex>& seeds) const {
   const std::size_t mm = r.size();
   const std::size_t span = std::min<std::size_t>(kKickSpan, mm - 2);

@@ -153,9 +153,16 @@ inline bool uses_penalised_costs(std::size_t holes, LocalSearch local_search) {
 // before -> with: pcb3038 at 15 s 0.048 -> 0.047 %, worst 0.084 -> 0.049 %
 // (seeds 1-20: worst 0.130 -> 0.073 %, 9 -> 3 above 0.06 %); d493 at 1 s
 // 0.20 -> 0.00 %, d657 at 2 s 0.072 -> 0.002 %, u724 at 2 s 0.048 -> 0.005 %.
-// Between, where the ants' 3-opt searches alpha-nearest candidates, they
-// lost: d1291 at 5 s 0.00 -> 0.047 %, pcb1173 at 5 s 0.00 -> 0.007 %.
-inline bool uses_lkh_stall_answers(std::size_t holes) { return holes <= kFullListLimit || holes >= kFiveOptFrom; }
+// pla7397 at 91 s 0.038 % (the gap table had 0.05 %). Between kFullListLimit and kFiveOptFrom,
+// where the ants' 3-opt searches alpha-nearest candidates, they lost: d1291
+// at 5 s 0.00 -> 0.047 %, pcb1173 at 5 s 0.00 -> 0.007 %; above
+// kManyAntsFrom, with 20 ants a round and their improvements merged, too:
+// d15112 at 64 s 0.063 -> 0.066 %, brd14051 at 65 s 0.044 -> 0.051 %, and
+// the scale table (seeds 1-3) 33 000 holes 0.56 -> 0.595 %, pla7397x5
+// 0.20 -> 0.24 % (seed 1 0.88 %), 100 000 holes 0.51 -> 0.548 %.
+inline bool uses_lkh_stall_answers(std::size_t holes) {
+  return holes <= kFullListLimit || (holes >= kFiveOptFrom && holes <= kManyAntsFrom);
+}
 constexpr double kJumpyOrder = 4.0;
 constexpr int kRestartAfter = 300;
 constexpr int kRestartKicks = 200;
@@ -214,9 +221,10 @@ struct alignas(64) AntRoute {
   detail::RouteDiff diff;
 };
 
-// The kick of a stalled focused colony (acceptance.cpp): a double bridge with
-// four cuts near a long edge of route r, found by random walks over the
-// candidate lists; appends the ends of its four new edges to seeds.
+// The kick of a stalled focused colony where uses_lkh_stall_answers()
+// (acceptance.cpp): a double bridge with four cuts near a long edge of route
+// r, found by random walks over the candidate lists; appends the ends of the
+// four edges it removes, which are those of the four it adds, to seeds.
 void walk_double_bridge(const Space& space, const Candidates& cand, std::vector<HoleIndex>& r, Rng& rng,
                         std::vector<HoleIndex>& seeds);
 
