@@ -156,10 +156,12 @@ inline bool uses_penalised_costs(std::size_t holes, LocalSearch local_search) {
 // pla7397 at 91 s 0.038 % (the gap table had 0.05 %). Between kFullListLimit and kFiveOptFrom,
 // where the ants' 3-opt searches alpha-nearest candidates, they lost: d1291
 // at 5 s 0.00 -> 0.047 %, pcb1173 at 5 s 0.00 -> 0.007 %; above
-// kManyAntsFrom, with 20 ants a round and their improvements merged, too:
-// d15112 at 64 s 0.063 -> 0.066 %, brd14051 at 65 s 0.044 -> 0.051 %, and
-// the scale table (seeds 1-3) 33 000 holes 0.56 -> 0.595 %, pla7397x5
-// 0.20 -> 0.24 % (seed 1 0.88 %), 100 000 holes 0.51 -> 0.548 %.
+// kManyAntsFrom, with 20 ants a round and their improvements merged, they
+// did not help d15112 and brd14051 (0.063 -> 0.066 %, 0.044 -> 0.051 %;
+// without them the same code gave 0.067 and 0.053 % later that day) and
+// lost on the scale table (seeds 1-3, medians, the same day): 33 000 holes
+// 0.562 -> 0.595 %, pla7397x5 0.264 -> 0.242 % but its worst 0.332 -> 0.880 %,
+// 100 000 holes 0.526 -> 0.548 %.
 inline bool uses_lkh_stall_answers(std::size_t holes) {
   return holes <= kFullListLimit || (holes >= kFiveOptFrom && holes <= kManyAntsFrom);
 }
