@@ -131,6 +131,67 @@ TEST(kopt_move_test, feasibility_and_flips_agree_with_the_edges_the_exchange_lea
   }
 }
 
+// Any exchange of k distinct edges of the cycle, its ends paired at random
+// (LKH's non-sequential moves, bridge_moves.cpp): the same oracle. Pairings
+// that re-add a removed edge, join a hole to itself or add an edge twice are
+// not exchanges and are skipped.
+TEST(kopt_move_test, any_exchange_is_judged_and_flipped_as_its_edges_say) {
+  std::mt19937 rng(23);
+  int feasible_seen[aco::detail::kMaxMoveK + 1] = {}, moves_seen[aco::detail::kMaxMoveK + 1] = {};
+  for (int trial = 0; trial < 200000; ++trial) {
+    const std::size_t m = 10 + rng() % 21;
+    std::vector<HoleIndex> r(m);
+    for (std::size_t i = 0; i < m; ++i) r[i] = static_cast<HoleIndex>(i);
+    std::shuffle(r.begin(), r.end(), rng);
+    ArrayCycle cycle(r);
+    const int k = 2 + static_cast<int>(rng() % (aco::detail::kMaxMoveK - 1));
+    HoleIndex t[2 * aco::detail::kMaxMoveK];
+    std::set<std::pair<HoleIndex, HoleIndex>> removed;
+    bool ok = true;
+    for (int i = 0; i < k && ok; ++i) {
+      t[2 * i] = static_cast<HoleIndex>(rng() % m);
+      t[2 * i + 1] = cycle.next(t[2 * i], static_cast<int>(rng() % 2));
+      ok = removed.insert(std::minmax(t[2 * i], t[2 * i + 1])).second;
+    }
+    if (!ok) continue;
+    std::vector<int> ends(static_cast<std::size_t>(2 * k));
+    for (int i = 0; i < 2 * k; ++i) ends[static_cast<std::size_t>(i)] = i;
+    std::shuffle(ends.begin(), ends.end(), rng);
+    int mate[2 * aco::detail::kMaxMoveK];
+    for (int i = 0; i < 2 * k; i += 2) {
+      mate[ends[static_cast<std::size_t>(i)]] = ends[static_cast<std::size_t>(i) + 1];
+      mate[ends[static_cast<std::size_t>(i) + 1]] = ends[static_cast<std::size_t>(i)];
+    }
+    auto edges = cycle.edges();
+    for (int i = 0; i < k; ++i) edges.erase(edges.find(std::minmax(t[2 * i], t[2 * i + 1])));
+    std::set<std::pair<HoleIndex, HoleIndex>> added;
+    for (int i = 0; i < 2 * k && ok; ++i) {
+      if (i > mate[i]) continue;
+      const auto e = std::minmax(t[i], t[mate[i]]);
+      ok = t[i] != t[mate[i]] && removed.count(e) == 0 && added.insert(e).second;
+      edges.insert(e);
+    }
+    if (!ok) continue;
+    const bool expected = one_cycle(m, edges);
+    KOptFlips flips;
+    const bool feasible = aco::detail::exchange_feasible(cycle, k, t, mate, &flips);
+    ++moves_seen[k];
+    ASSERT_EQ(feasible, expected) << "trial " << trial << " k " << k;
+    if (!feasible) continue;
+    ++feasible_seen[k];
+    for (int f = 0; f < flips.count; ++f) {
+      const auto& x = flips.flip[static_cast<std::size_t>(f)];
+      cycle.flip(x[0], x[1], x[2], x[3]);
+      if (::testing::Test::HasFatalFailure()) return;
+    }
+    ASSERT_EQ(cycle.edges(), edges) << "trial " << trial << " k " << k;
+  }
+  for (int k = 2; k <= aco::detail::kMaxMoveK; ++k) {
+    EXPECT_GT(feasible_seen[k], 100) << "k " << k;
+    EXPECT_GT(moves_seen[k] - feasible_seen[k], 100) << "k " << k;
+  }
+}
+
 TEST(kopt_move_test, every_reversal_plan_is_shortest_and_reaches_its_permutation) {
   // Segments 1..m after segment 0: every signed permutation is reached, and
   // the count of reversals never exceeds what a k-opt move is known to need

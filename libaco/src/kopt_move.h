@@ -46,6 +46,12 @@ struct KOptFlips {
 template <class Tour>
 bool kopt_feasible(const Tour& tour, const KOptMove& move, KOptFlips* flips);
 
+// The same for any exchange of k edges, sequential or not (LKH's Gain23
+// moves, bridge_moves.cpp): it removes (t[2i], t[2i+1]) and adds (t[i],
+// t[mate[i]]) for every i, each end given one mate.
+template <class Tour>
+bool exchange_feasible(const Tour& tour, int k, const HoleIndex* t, const int* mate, KOptFlips* flips);
+
 namespace kopt {
 
 // For segments 1..m-1 (m = k - 1 of them after segment 0), the fewest
@@ -58,8 +64,11 @@ int reversal_plan(int m, const int* target, std::array<std::pair<int, int>, 8>& 
 
 template <class Tour>
 bool kopt_feasible(const Tour& tour, const KOptMove& move, KOptFlips* flips) {
-  const int k = move.k;
-  const HoleIndex* t = move.t;
+  return exchange_feasible(tour, move.k, move.t, nullptr, flips);
+}
+
+template <class Tour>
+bool exchange_feasible(const Tour& tour, int k, const HoleIndex* t, const int* mate, KOptFlips* flips) {
   const int dir = tour.next(t[0], 0) == t[1] ? 0 : 1;
   const std::size_t m = tour.size();
   // Places read that way, from t[0]'s.
@@ -107,7 +116,10 @@ bool kopt_feasible(const Tour& tour, const KOptMove& move, KOptFlips* flips) {
     seg_last[s] = end;
   }
   // Walk: out of segment 0's last end, along the added edges.
-  auto partner = [k](int i) { return i == 0 ? 2 * k - 1 : i == 2 * k - 1 ? 0 : (i % 2 == 1 ? i + 1 : i - 1); };
+  auto partner = [k, mate](int i) {
+    if (mate != nullptr) return mate[i];
+    return i == 0 ? 2 * k - 1 : i == 2 * k - 1 ? 0 : (i % 2 == 1 ? i + 1 : i - 1);
+  };
   int target[kMaxMoveK - 1];
   int visited = 1;
   int at = seg_last[0];
