@@ -375,6 +375,40 @@ TEST(local_search_test, five_opt_on_penalised_costs_shortens_three_opt_optima) {
   }
 }
 
+TEST(local_search_test, non_sequential_moves_shorten_five_opt_optima) {
+  // LKH's Gain23 moves at the 5-opt step's dead ends (bridge_moves.cpp):
+  // from a route no sequential 5-opt move improves, they must find more,
+  // every move they make must shorten the route (audited), their gains must
+  // add up to what it lost, and it must stay a route, closed or open. Fails
+  // if the search made exchanges that split the route, paid the penalties on
+  // one side only, or found nothing.
+  for (aco::Shape shape : {aco::Shape::ClosedTour, aco::Shape::OpenPath}) {
+    for (unsigned seed = 1; seed <= 3; ++seed) {
+      SCOPED_TRACE(::testing::Message() << "shape " << int(shape) << " seed " << seed);
+      const aco::Problem p = random_problem(2000, seed, shape, seed % 2 == 0);
+      const aco::detail::Space space(p);
+      const aco::detail::Candidates nearest = aco::detail::joined_nearest(space, 16);
+      const aco::detail::Candidates cand = aco::detail::alpha_candidates(space, nearest, 5, 30);
+      std::vector<HoleIndex> route = start_route(space, p, seed);
+      aco::detail::LocalSearcher ls(space, cand);
+      ls.audit(true);
+      ls.non_sequential(false);
+      double length = std::numeric_limits<double>::infinity();
+      for (int pass = 0; pass < 20 && space.route_cost(route) < length - 1e-9; ++pass) {
+        length = space.route_cost(route);
+        ls.improve(route, Moves::FiveOpt);
+      }
+      const double five_opt = space.route_cost(route);
+      ls.non_sequential(true);
+      ls.improve(route, Moves::FiveOpt);
+      expect_route(space, route);
+      EXPECT_NEAR(ls.gain(), five_opt - space.route_cost(route), 1e-9 * five_opt);
+      EXPECT_LT(space.route_cost(route), five_opt - 1e-6);
+      EXPECT_EQ(ls.failed_audits(), 0u) << "moves that did not shorten the route";
+    }
+  }
+}
+
 // The 5-opt step pays its gains in the ascent's penalised costs up to
 // kPenalisedTo holes and in plain lengths above (where the ascent is cut
 // short), and no other search reads the penalties.
@@ -686,6 +720,7 @@ TEST(local_search_test, a_search_restricted_to_a_route_starts_no_step_from_its_e
 
     std::vector<HoleIndex> restricted = reference;
     ls.restrict_to(&reference, &pos);
+    ls.non_sequential(false);  // as LKH's Gain23, not restricted
     ls.improve_from(restricted, moves, all);
     EXPECT_EQ(restricted, reference) << "moves " << int(moves);
     EXPECT_EQ(ls.gain(), 0.0);

@@ -322,6 +322,7 @@ void LocalSearcher::run_queue(Moves moves) {
     if (!moved && moves != Moves::TwoOpt) moved = try_or_opt(a);
     if (!moved && moves == Moves::ThreeOpt && !windowed_) moved = try_three_opt(a);
     if (!moved && moves == Moves::FiveOpt && !windowed_) moved = m_ >= 8 ? try_five_opt(a) : try_three_opt(a);
+    if (!moved && moves == Moves::FiveOpt && !windowed_ && non_sequential_) moved = try_bridge(a);
     if (audit_) {
       ++audited_searches_;
       const double after = space_.route_cost(route_);

@@ -76,6 +76,9 @@ class alignas(64) LocalSearcher {
   // no move yet changed it (O(n) each, so never in a run). The first failure
   // ends the search.
   void audit(bool on) { audit_ = on; }
+  // LKH's non-sequential moves (its Gain23, bridge_moves.cpp) from every hole
+  // whose 5-opt search found nothing; on by default, off for tests.
+  void non_sequential(bool on) { non_sequential_ = on; }
   // For tests: Or-opt moves by reversals from this shift on (see kFarShift).
   void far_shift(std::size_t holes) { far_shift_ = holes; }
   // For tests: deepen()'s trial flips longer than this go to its overlay (see kArrayFlip).
@@ -94,7 +97,8 @@ class alignas(64) LocalSearcher {
   // both held by the caller, read while searching; null: no restriction).
   // A focused ant passes the reference: its search starts only by taking out
   // edges the ant or a move made, as LKH's starts only off its best tour.
-  // 2-opt and Or-opt are not restricted. docs/colony.md has what it measured.
+  // 2-opt, Or-opt and the non-sequential moves (as LKH's Gain23) are not
+  // restricted. docs/colony.md has what it measured.
   void restrict_to(const std::vector<HoleIndex>* route, const std::vector<std::uint32_t>* positions) {
     restrict_route_ = route;
     restrict_pos_ = positions;
@@ -146,6 +150,8 @@ class alignas(64) LocalSearcher {
   // did not gain (five_opt.cpp).
   bool try_five_opt(HoleIndex t1);
   bool five_opt_chain(HoleIndex t1, KOptMove step, double gain);
+  // LKH's non-sequential moves from s1: makes the first that gains (bridge_moves.cpp).
+  bool try_bridge(HoleIndex s1);
   void make_flips(const KOptFlips& flips);  // on the array, in order
   // A chain's trial flips (deepen(), five_opt_chain()): those made in trial_
   // made again on the array, in order, once the chain gains; or, when it
@@ -233,6 +239,7 @@ class alignas(64) LocalSearcher {
   std::size_t lo_ = 0, hi_ = 0;  // positions a move may touch
   bool windowed_ = false;
   bool audit_ = false;
+  bool non_sequential_ = true;
   std::size_t far_shift_ = kFarShift;
   std::size_t array_flip_ = kArrayFlip;
   double gain_ = 0.0;
