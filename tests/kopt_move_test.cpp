@@ -43,6 +43,13 @@ struct ArrayCycle {
     std::reverse(route.begin() + static_cast<long>(i + 1), route.begin() + static_cast<long>(j + 1));
     for (std::size_t p = i + 1; p <= j; ++p) pos[route[p]] = p;
   }
+  // The flips in order; stops at the first that is not one.
+  void make(const KOptFlips& flips) {
+    for (int f = 0; f < flips.count && !::testing::Test::HasFatalFailure(); ++f) {
+      const auto& x = flips.flip[static_cast<std::size_t>(f)];
+      flip(x[0], x[1], x[2], x[3]);
+    }
+  }
   std::multiset<std::pair<HoleIndex, HoleIndex>> edges() const {
     std::multiset<std::pair<HoleIndex, HoleIndex>> e;
     for (std::size_t i = 0; i < m(); ++i) e.insert(std::minmax(route[i], route[(i + 1) % m()]));
@@ -118,11 +125,8 @@ TEST(kopt_move_test, feasibility_and_flips_agree_with_the_edges_the_exchange_lea
     if (!feasible) continue;
     ++feasible_seen[k];
     EXPECT_LE(flips.count, k) << "more reversals than a k-opt move needs";
-    for (int f = 0; f < flips.count; ++f) {
-      const auto& x = flips.flip[static_cast<std::size_t>(f)];
-      cycle.flip(x[0], x[1], x[2], x[3]);
-      if (::testing::Test::HasFatalFailure()) return;
-    }
+    cycle.make(flips);
+    if (::testing::Test::HasFatalFailure()) return;
     ASSERT_EQ(cycle.edges(), edges) << "trial " << trial << " k " << k;
   }
   for (int k = 2; k <= aco::detail::kMaxMoveK; ++k) {
@@ -179,11 +183,8 @@ TEST(kopt_move_test, any_exchange_is_judged_and_flipped_as_its_edges_say) {
     ASSERT_EQ(feasible, expected) << "trial " << trial << " k " << k;
     if (!feasible) continue;
     ++feasible_seen[k];
-    for (int f = 0; f < flips.count; ++f) {
-      const auto& x = flips.flip[static_cast<std::size_t>(f)];
-      cycle.flip(x[0], x[1], x[2], x[3]);
-      if (::testing::Test::HasFatalFailure()) return;
-    }
+    cycle.make(flips);
+    if (::testing::Test::HasFatalFailure()) return;
     ASSERT_EQ(cycle.edges(), edges) << "trial " << trial << " k " << k;
   }
   for (int k = 2; k <= aco::detail::kMaxMoveK; ++k) {
