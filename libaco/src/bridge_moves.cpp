@@ -27,33 +27,18 @@
 
 namespace aco::detail {
 
-namespace {
-
-bool same_edge(HoleIndex a, HoleIndex b, HoleIndex c, HoleIndex d) { return (a == c && b == d) || (a == d && b == c); }
-
-}  // namespace
-
 bool LocalSearcher::try_bridge(HoleIndex s1) {
   const HoleIndex v = space_.open() ? space_.virtual_node() : static_cast<HoleIndex>(-1);
   if (s1 == v || m_ < 8) return false;
   const int breadth = std::min(kDeepBreadth, cand_.k);
-  const bool pen = cand_.has_pi();
-  auto c = [&](HoleIndex a, HoleIndex b) { return pen ? space_.d(a, b) + cand_.pi[a] + cand_.pi[b] : space_.d(a, b); };
-  auto row = [&](HoleIndex a) {
-    const std::size_t r = static_cast<std::size_t>(a) * static_cast<std::size_t>(cand_.k);
-    return pen ? cand_.pi_list.data() + r : cand_.of(a);
-  };
-  auto row_cost = [&](HoleIndex a) {
-    const std::size_t r = static_cast<std::size_t>(a) * static_cast<std::size_t>(cand_.k);
-    return pen ? cand_.pi_length.data() + r : cand_.lengths_of(a);
-  };
+  auto c = [&](HoleIndex a, HoleIndex b) { return penalised(space_, cand_, a, b); };
   auto neighbours = [&](HoleIndex a, HoleIndex b) { return next(a, 0) == b || next(a, 1) == b; };
   ArrayTour tour{*this};
   for (int dir = 0; dir < 2; ++dir) {
     const HoleIndex s2 = next(s1, dir);
     if (s2 == v) continue;
-    const HoleIndex* s2_row = row(s2);
-    const double* s2_cost = row_cost(s2);
+    const HoleIndex* s2_row = cand_.search_row(s2);
+    const double* s2_cost = cand_.search_costs(s2);
     for (int r2 = 0; r2 < breadth; ++r2) {
       const HoleIndex s3 = s2_row[r2];
       if (s3 == v || neighbours(s2, s3)) continue;
@@ -86,8 +71,8 @@ bool LocalSearcher::try_bridge(HoleIndex s1) {
         t1 = t2;
         if (here == v || t2 == v) continue;
         const double g0 = g + c(here, t2);
-        const HoleIndex* t2_row = row(t2);
-        const double* t2_cost = row_cost(t2);
+        const HoleIndex* t2_row = cand_.search_row(t2);
+        const double* t2_cost = cand_.search_costs(t2);
         for (int r = 0; r < breadth; ++r) {
           const HoleIndex t3 = t2_row[r];
           if (t3 == v || neighbours(t2, t3) || between(u2, t3, u3, dir)) continue;
@@ -103,8 +88,8 @@ bool LocalSearcher::try_bridge(HoleIndex s1) {
               if (make(4, mate)) return true;
             }
             // One step deeper: (t4, t5), t6 beside t5, closing (t6, t1).
-            const HoleIndex* t4_row = row(t4);
-            const double* t4_cost = row_cost(t4);
+            const HoleIndex* t4_row = cand_.search_row(t4);
+            const double* t4_cost = cand_.search_costs(t4);
             for (int r4 = 0; r4 < breadth; ++r4) {
               const HoleIndex t5 = t4_row[r4];
               const double g3 = g2 - t4_cost[r4];

@@ -39,6 +39,14 @@ struct Candidates {
   const HoleIndex* of(HoleIndex i) const { return list.data() + static_cast<std::size_t>(i) * k; }
   const double* lengths_of(HoleIndex i) const { return length.data() + static_cast<std::size_t>(i) * k; }
   bool has_pi() const { return !pi.empty(); }
+  // The rows the 5-opt step and the non-sequential moves read: sorted by
+  // penalised cost, those costs beside them, where kept; else `list` and `length`.
+  const HoleIndex* search_row(HoleIndex i) const {
+    return has_pi() ? pi_list.data() + static_cast<std::size_t>(i) * k : of(i);
+  }
+  const double* search_costs(HoleIndex i) const {
+    return has_pi() ? pi_length.data() + static_cast<std::size_t>(i) * k : lengths_of(i);
+  }
 };
 
 // threads: how many workers fill the rows (each row alone, so any count gives

@@ -26,14 +26,6 @@ namespace aco::detail {
 
 namespace {
 
-bool same_edge(HoleIndex a, HoleIndex b, HoleIndex c, HoleIndex d) { return (a == c && b == d) || (a == d && b == c); }
-
-// What edge (a, b) costs the search: its length, plus the ascent's penalties
-// of its ends where the candidates carry them.
-double penalised(const Space& space, const Candidates& cand, HoleIndex a, HoleIndex b) {
-  return cand.has_pi() ? space.d(a, b) + cand.pi[a] + cand.pi[b] : space.d(a, b);
-}
-
 bool holds(const std::vector<std::array<HoleIndex, 2>>& edges, HoleIndex a, HoleIndex b) {
   for (const auto& e : edges) {
     if (same_edge(a, b, e[0], e[1])) return true;
@@ -103,9 +95,8 @@ class KOptSearch {
       }
       return false;
     }
-    const std::size_t row = static_cast<std::size_t>(last) * static_cast<std::size_t>(cand_.k);
-    const HoleIndex* nbr = cand_.has_pi() ? cand_.pi_list.data() + row : cand_.of(last);
-    const double* nbr_length = cand_.has_pi() ? cand_.pi_length.data() + row : cand_.lengths_of(last);
+    const HoleIndex* nbr = cand_.search_row(last);
+    const double* nbr_length = cand_.search_costs(last);
     for (int r = 0; r < breadth_; ++r) {
       const HoleIndex a = nbr[r];
       const double g1 = g - nbr_length[r];

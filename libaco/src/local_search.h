@@ -21,6 +21,14 @@ namespace aco::detail {
 // two equal-length routes swap forever.
 inline constexpr double kMinGain = 1e-9;
 
+inline bool same_edge(HoleIndex a, HoleIndex b, HoleIndex c, HoleIndex d) { return (a == c && b == d) || (a == d && b == c); }
+
+// What edge (a, b) costs the 5-opt step and the non-sequential moves: its
+// length, plus the ascent's penalties of its ends where the candidates carry them.
+inline double penalised(const Space& space, const Candidates& cand, HoleIndex a, HoleIndex b) {
+  return cand.has_pi() ? space.d(a, b) + cand.pi[a] + cand.pi[b] : space.d(a, b);
+}
+
 // Which moves a search tries at each hole, each set adding to the one before.
 enum class Moves {
   TwoOpt,
