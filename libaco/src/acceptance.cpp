@@ -90,7 +90,7 @@ void walk_double_bridge(const Space& space, const Candidates& cand, std::vector<
   r.swap(out);
 }
 
-bool Colony::accept_or_kick(const std::vector<HoleIndex>*& ib_route, double& ib_len, bool& ib_measured, bool ib_plateau) {
+void Colony::accept_or_kick(const std::vector<HoleIndex>*& ib_route, double& ib_len, bool& ib_measured, bool ib_plateau) {
   ++ref_stall_;
   const bool better = ib_len < ref_len_ - 1e-9;
   // On routes of any length. Up to kFullListLimit holes there were no
@@ -122,8 +122,7 @@ bool Colony::accept_or_kick(const std::vector<HoleIndex>*& ib_route, double& ib_
     Rng krng(p_.seed ^ 0x9E3779B97F4A7C15ULL, static_cast<std::uint64_t>(run_.it), 0xFFFF);
     std::vector<HoleIndex> r;
     bool shaken = false;
-    const bool restarting = restart_due();
-    if (restarting) {
+    if (restart_due()) {
       shaken = restart(krng, r);
     } else {
       r = run_.restart_best;  // not a wandering reference
@@ -148,9 +147,7 @@ bool Colony::accept_or_kick(const std::vector<HoleIndex>*& ib_route, double& ib_
       }
     }
     ref_stall_ = 0;
-    return restarting && shaken;
   }
-  return false;
 }
 
 }  // namespace aco::detail

@@ -296,8 +296,7 @@ class Colony {
   void merge_improvements(int ib, const std::vector<HoleIndex>*& ib_route, double& ib_len);
   // Acceptance and kicks (acceptance.cpp): the reference moves to the round's
   // best, or, stuck, the colony is kicked (or restarted, restarts.cpp).
-  // Returns whether the colony restarted.
-  bool accept_or_kick(const std::vector<HoleIndex>*& ib_route, double& ib_len, bool& ib_measured, bool ib_plateau);
+  void accept_or_kick(const std::vector<HoleIndex>*& ib_route, double& ib_len, bool& ib_measured, bool ib_plateau);
   void double_bridge(std::vector<HoleIndex>& r, Rng& krng, std::vector<HoleIndex>& seeds) const;
   // Restarts (restarts.cpp): whether the colony is long stuck, and the restart
   // itself: `r` becomes the best so far shaken and improved; false when the

@@ -189,7 +189,7 @@ bool Colony::after_round() {
   if (run_.focused && run_.work[ib].improves) merge_improvements(ib, ib_route, ib_len);
   ++run_.since_improvement;
   ++run_.since_restart;
-  const bool restarted = run_.focused && accept_or_kick(ib_route, ib_len, ib_measured, ib_plateau);
+  if (run_.focused) accept_or_kick(ib_route, ib_len, ib_measured, ib_plateau);
   // Not the reference, yet better (an ant that gave back R, its length a
   // last bit short): rare.
   if (!ib_measured && (ib_len < run_.best_len - 1e-9 || ib_len < run_.restart_best_len - 1e-9)) {
@@ -201,10 +201,13 @@ bool Colony::after_round() {
     run_.since_improvement = 0;
     run_.sol.trace.push_back({run_.it, clock_.seconds(), run_.best_len});
   }
-  // Not on a restart's round: this round's best is the last epoch's, and as
-  // the new epoch's best it made every restart go back to the best so far
-  // at the next kick (pla7397, seed 1: all 18 restarts of a 91 s run).
-  if (!restarted && ib_len < run_.restart_best_len - 1e-9) {
+  // On a restart's round this comes after the restart, so this round's best
+  // (from the epoch that just ended, about as good as the best so far)
+  // becomes the new epoch's best and its kicks go from there: a restart
+  // resets the trail and sends the reference off from the shaken route for
+  // kKickAfter rounds or more, then the colony is back near the best so far.
+  // Restarts as whole epochs of their own measured worse (docs/colony.md).
+  if (ib_len < run_.restart_best_len - 1e-9) {
     run_.restart_best_len = ib_len;
     run_.restart_best = *ib_route;
     run_.since_restart = 0;
