@@ -733,3 +733,24 @@ TEST(local_search_test, a_search_restricted_to_a_route_starts_no_step_from_its_e
 }
 
 }  // namespace
+
+namespace {
+
+// The fresh restarts' route (restarts.cpp): nearest neighbour from a given
+// hole. Holes on a line with widening gaps, so no distance ties.
+TEST(NearestNeighbourOrder, StartsAtTheGivenHoleOfAClosedTourAndAtTheStartPointOfAnOpenPath) {
+  aco::Problem p;
+  for (const double x : {0.0, 1.0, 3.0, 6.0, 10.0, 15.0}) p.points.push_back({x, 0.0});
+  {
+    const aco::detail::Space space(p);
+    EXPECT_EQ(aco::detail::nearest_neighbor_order(space, {}, 2), (aco::Order{2, 1, 0, 3, 4, 5}));
+    EXPECT_EQ(aco::detail::nearest_neighbor_order(space, {}, 4), (aco::Order{4, 3, 2, 1, 0, 5}));
+    EXPECT_EQ(aco::detail::nearest_neighbor_order(space, {}), (aco::Order{0, 1, 2, 3, 4, 5}));
+  }
+  p.shape = aco::Shape::OpenPath;
+  p.start = {16.0, 0.0};
+  const aco::detail::Space space(p);
+  EXPECT_EQ(aco::detail::nearest_neighbor_order(space, {}, 2), (aco::Order{5, 4, 3, 2, 1, 0}));
+}
+
+}  // namespace

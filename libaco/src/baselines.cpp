@@ -19,7 +19,7 @@ namespace aco {
 
 namespace detail {
 
-Order nearest_neighbor_order(const Space& space, const Candidates&) {
+Order nearest_neighbor_order(const Space& space, const Candidates&, HoleIndex first) {
   const HoleIndex n = space.holes();
   Order order;
   order.reserve(n);
@@ -29,7 +29,7 @@ Order nearest_neighbor_order(const Space& space, const Candidates&) {
   if (space.open()) {
     cur = grid.nearest(space.start(), [&](HoleIndex h) { return space.e(space.virtual_node(), h); });
   } else {
-    cur = 0;
+    cur = first < n ? first : 0;
   }
   grid.remove(cur);
   order.push_back(cur);
@@ -73,7 +73,7 @@ Order input_order(const Problem& problem) {
 
 Order nearest_neighbor(const Problem& problem) {
   detail::Space space(problem);
-  return detail::nearest_neighbor_order(space, {});
+  return detail::nearest_neighbor_order(space, {}, 0);
 }
 
 Order improve(const Problem& problem, Order order, bool or_opt) {
