@@ -47,11 +47,7 @@ Order nearest_neighbor_order(const Space& space, const Candidates&, HoleIndex fi
 namespace {
 
 std::vector<HoleIndex> to_route(const detail::Space& space, const Order& order) {
-  std::vector<HoleIndex> route;
-  route.reserve(order.size() + 1);
-  if (space.open()) route.push_back(space.virtual_node());
-  route.insert(route.end(), order.begin(), order.end());
-  return route;
+  return detail::route_from_order(space, order);
 }
 
 Order from_route(const detail::Space& space, const std::vector<HoleIndex>& route) {

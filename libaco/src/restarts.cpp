@@ -16,10 +16,7 @@ bool Colony::restart_due() const { return run_.since_restart >= kRestartAfter; }
 bool Colony::restart(Rng& krng, std::vector<HoleIndex>& r) {
   ++run_.restarts;
   if (uses_fresh_restarts(n_) && run_.restarts % kFreshEvery == 0) {
-    const Order nn = nearest_neighbor_order(space_, cand_, static_cast<HoleIndex>(krng.below(n_)));
-    r.clear();
-    if (space_.open()) r.push_back(n_);
-    r.insert(r.end(), nn.begin(), nn.end());
+    r = route_from_order(space_, nearest_neighbor_order(space_, cand_, static_cast<HoleIndex>(krng.below(n_))));
   } else {
     r = run_.best_route;  // not a wandering reference
     std::vector<HoleIndex> seeds;

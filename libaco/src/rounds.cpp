@@ -18,9 +18,7 @@ void Colony::start() {
 
   // Nearest neighbour, improved when local search is on, starts the best-so-far
   // and gives C_nn for the initial trail.
-  Order nn = nearest_neighbor_order(space_, cand_);
-  if (space_.open()) s.best_route.push_back(n_);
-  s.best_route.insert(s.best_route.end(), nn.begin(), nn.end());
+  s.best_route = route_from_order(space_, nearest_neighbor_order(space_, cand_));
   const double c_nn = std::max(space_.route_cost(s.best_route), 1e-9);
   s.use_ls = p_.local_search != LocalSearch::None;
   s.moves = p_.local_search == LocalSearch::FiveOpt       ? Moves::FiveOpt

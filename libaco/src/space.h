@@ -77,4 +77,13 @@ class Space {
   Point2 end_;
 };
 
+// A hole order as a route: V first for an open path.
+inline std::vector<HoleIndex> route_from_order(const Space& space, const Order& order) {
+  std::vector<HoleIndex> route;
+  route.reserve(order.size() + 1);
+  if (space.open()) route.push_back(space.virtual_node());
+  route.insert(route.end(), order.begin(), order.end());
+  return route;
+}
+
 }  // namespace aco::detail
