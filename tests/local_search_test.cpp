@@ -732,13 +732,9 @@ TEST(local_search_test, a_search_restricted_to_a_route_starts_no_step_from_its_e
   }
 }
 
-}  // namespace
-
-namespace {
-
 // The fresh restarts' route (restarts.cpp): nearest neighbour from a given
 // hole. Holes on a line with widening gaps, so no distance ties.
-TEST(NearestNeighbourOrder, StartsAtTheGivenHoleOfAClosedTourAndAtTheStartPointOfAnOpenPath) {
+TEST(local_search_test, nearest_neighbour_starts_at_the_given_hole_of_a_closed_tour_and_at_the_start_point_of_an_open_path) {
   aco::Problem p;
   for (const double x : {0.0, 1.0, 3.0, 6.0, 10.0, 15.0}) p.points.push_back({x, 0.0});
   {

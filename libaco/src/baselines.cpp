@@ -46,10 +46,6 @@ Order nearest_neighbor_order(const Space& space, const Candidates&, HoleIndex fi
 
 namespace {
 
-std::vector<HoleIndex> to_route(const detail::Space& space, const Order& order) {
-  return detail::route_from_order(space, order);
-}
-
 Order from_route(const detail::Space& space, const std::vector<HoleIndex>& route) {
   Order o;
   o.reserve(route.size());
@@ -76,7 +72,7 @@ Order improve(const Problem& problem, Order order, bool or_opt) {
   detail::Space space(problem);
   detail::Candidates cand = detail::build_candidates(space, 10);
   detail::LocalSearcher ls(space, cand);
-  std::vector<HoleIndex> route = to_route(space, order);
+  std::vector<HoleIndex> route = detail::route_from_order(space, order);
   ls.improve(route, or_opt ? detail::Moves::OrOpt : detail::Moves::TwoOpt);
   return from_route(space, route);
 }
