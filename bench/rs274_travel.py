@@ -16,8 +16,9 @@ with tempfile.TemporaryDirectory() as d:
     with open(os.path.join(d, "tool.tbl"), "w") as f:
         for t in tools:
             f.write(f"T{t} P{t} Z0 D1\n")
+    # HOME of its own: LinuxCNC 2.9 shares $HOME/.tool.mmap between every rs274 of the user.
     canon = subprocess.run(["rs274", "-t", "tool.tbl", "-g", os.path.abspath(sys.argv[1])], cwd=d,
-                           capture_output=True, text=True).stdout
+                           env=dict(os.environ, HOME=d), capture_output=True, text=True).stdout
 x = y = 0.0
 travel = 0.0
 for m in re.finditer(r"(STRAIGHT_TRAVERSE|STRAIGHT_FEED)\(([^)]*)\)", canon):

@@ -101,9 +101,7 @@ void check_program(const std::string& program_path, const std::string& sample, b
   for (std::sregex_iterator it(prog.begin(), prog.end(), tool_word), end; it != end; ++it) tools.insert((*it)[1].str());
   for (const std::string& n : tools) table += "T" + n + " P" + n + " Z0 D1\n";
   testutil::spit(t / "tool.tbl", table);
-  // From a directory of its own: rs274 keeps state files in its working directory.
-  auto r = testutil::run("cd " + testutil::shell_quote(t.path()) + " && rs274 -t tool.tbl -g " +
-                         testutil::shell_quote(program_path));
+  auto r = testutil::rs274_in(t.path(), "-t tool.tbl -g " + testutil::shell_quote(program_path));
   ASSERT_EQ(r.code, 0) << what << ": rs274 rejected the program:\n" << r.err;
   EXPECT_EQ(r.err.find("error"), std::string::npos) << r.err;
   const CanonRun canon_run = read_canon(r.out, 1.0);  // program units
@@ -357,7 +355,7 @@ CanonRun run_rs274(const std::string& program_text, double scale, const std::str
   for (const std::string& n : tools) table += "T" + n + " P" + n + " Z0 D1\n";
   testutil::spit(t / "tool.tbl", table);
   testutil::spit(t / "p.ngc", for_rs274(program_text));
-  auto r = testutil::run("cd " + testutil::shell_quote(t.path()) + " && rs274 -t tool.tbl -g p.ngc");
+  auto r = testutil::rs274_in(t.path(), "-t tool.tbl -g p.ngc");
   EXPECT_EQ(r.code, 0) << what << ": rs274 rejected the program:\n" << r.err;
   return read_canon(r.out, scale);
 }
@@ -758,7 +756,7 @@ std::vector<Stroke> strokes_of(const std::string& program_path) {
   std::string table;
   for (int n = 1; n <= 40; ++n) table += "T" + std::to_string(n) + " P" + std::to_string(n) + " Z0 D1\n";
   testutil::spit(t / "tool.tbl", table);
-  auto r = testutil::run("cd " + testutil::shell_quote(t.path()) + " && rs274 -t tool.tbl -g " + testutil::shell_quote(program_path));
+  auto r = testutil::rs274_in(t.path(), "-t tool.tbl -g " + testutil::shell_quote(program_path));
   EXPECT_EQ(r.code, 0) << r.err;
   static const std::regex call(R"((STRAIGHT_TRAVERSE|STRAIGHT_FEED)\(([^)]*)\))");
   std::vector<Stroke> out;

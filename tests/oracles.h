@@ -67,7 +67,7 @@ inline Canon run_rs274(const std::string& program_path) {
   for (std::sregex_iterator it(prog.begin(), prog.end(), tool_word), end; it != end; ++it) tools.insert((*it)[1].str());
   for (const std::string& n : tools) table += "T" + n + " P" + n + " Z0 D1\n";
   testutil::spit(t / "tool.tbl", table);
-  auto r = testutil::run("cd " + testutil::shell_quote(t.path()) + " && rs274 -t tool.tbl -g p.ngc");
+  auto r = testutil::rs274_in(t.path(), "-t tool.tbl -g p.ngc");
   EXPECT_EQ(r.code, 0) << r.err;
   EXPECT_EQ(r.err.find("error"), std::string::npos) << r.err;
   Canon c;

@@ -93,6 +93,16 @@ inline Run run(const std::string& command, const std::string& stdin_text = "") {
   return r;
 }
 
+// LinuxCNC's interpreter rs274, run in `dir` with `dir` as its HOME too
+// (issue 85): it keeps state files in its working directory, and LinuxCNC
+// 2.9 maps its tool data into $HOME/.tool.mmap, one file for every rs274 of
+// the user, so two runs at once with different tool tables read each
+// other's ("Requested tool 7 not found in the tool table"). Every test
+// starts rs274 through this.
+inline Run rs274_in(const std::string& dir, const std::string& args) {
+  return run("cd " + shell_quote(dir) + " && HOME=" + shell_quote(dir) + " rs274 " + args);
+}
+
 inline Run acodrill_run(const std::string& args, const std::string& stdin_text = "") {
   return run(shell_quote(acodrill()) + " " + args, stdin_text);
 }

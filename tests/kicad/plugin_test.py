@@ -64,8 +64,10 @@ def rs274_strokes(program):
     with tempfile.TemporaryDirectory() as d:
         with open(os.path.join(d, "tool.tbl"), "w") as f:
             f.write("".join(f"T{n} P{n} Z0 D1\n" for n in range(1, 60)))
+        # HOME of its own too: LinuxCNC 2.9 maps its tool data into $HOME/.tool.mmap, one file for every
+        # rs274 of the user, so two runs at once would read each other's tool tables (issue 85).
         done = subprocess.run(["rs274", "-t", "tool.tbl", "-g", os.path.abspath(program)], cwd=d,
-                              capture_output=True, text=True)
+                              env=dict(os.environ, HOME=d), capture_output=True, text=True)
     assert done.returncode == 0, done.stderr
     strokes, x, y, z = [], 0.0, 0.0, 0.0
     for m in re.finditer(r"(STRAIGHT_TRAVERSE|STRAIGHT_FEED)\(([^)]*)\)", done.stdout):

@@ -21,12 +21,13 @@ bad() { failed=$((failed + 1)); echo "FAILED: $*"; }
 # A path as Windows sees the Linux file system (Wine's Z: drive), with backslashes.
 winpath() { echo "Z:$1" | tr '/' '\\'; }
 
-# rs274's holes: downward feeds at one XY (one per hole), in a folder of its own.
+# rs274's holes: downward feeds at one XY (one per hole), in a folder of its own that is its HOME too
+# (LinuxCNC 2.9 maps its tool data into $HOME/.tool.mmap, shared by every rs274 of the user: issue 85).
 rs274_holes() {
   local d; d=$(mktemp -d)
   sed 's/G53 G00 Z0\./G00 Z100./' "$1" > "$d/p.ngc"
   grep -o 'T[0-9]*' "$1" | sort -u | sed 's/T\([0-9]*\)/T\1 P\1 Z0 D1/' > "$d/tool.tbl"
-  (cd "$d" && rs274 -t tool.tbl -g p.ngc 2>/dev/null) | awk '
+  (cd "$d" && HOME="$d" rs274 -t tool.tbl -g p.ngc 2>/dev/null) | awk '
     /STRAIGHT_TRAVERSE|STRAIGHT_FEED/ {
       s = $0; sub(/.*\(/, "", s); sub(/\).*/, "", s); split(s, v, ", ")
       if (v[1] != x || v[2] != y) { fresh = 1 }
