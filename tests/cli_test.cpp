@@ -1,5 +1,9 @@
 // acodrill end to end, as a shop engineer and a CAM pipeline use it: the
 // contract's commands, outputs and exit codes (../shared/interface.md).
+#include <sys/stat.h>
+#include <sys/sysmacros.h>
+#include <unistd.h>
+
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -652,4 +656,94 @@ TEST(cli_test, scripts_demo_builds_every_program_the_readme_places_in_build_bin)
   for (const std::string program : {"acodrill", "acobench", "acodrill-linuxcnc-filter"}) {
     EXPECT_THAT(" " + targets[1].str() + " ", ::testing::HasSubstr(" " + program + " ")) << program;
   }
+}
+
+// Issue 85: only a regular file (or a name not taken yet) is replaced by a
+// rename; a FIFO is written in place, and its reader gets the program.
+TEST(cli_test, a_fifo_given_as_an_output_is_written_in_place_and_stays_a_fifo) {
+  TempDir t;
+  const std::string plate = q(testutil::source_dir() + "/samples/plate10.dxf");
+  auto plain = acodrill_run("plan " + plate + " --iterations 20 -q -o " + q(t / "plain.nc") + " --report " + q(t / "plain.json"));
+  ASSERT_EQ(plain.code, 0) << plain.err;
+  for (const std::string option : {"-o", "--report"}) {
+    ASSERT_EQ(::mkfifo((t / "pipe").c_str(), 0600), 0);
+    // The reader is cat, started first; the writer's open waits for it (a minute at most: a FIFO
+    // replaced by a file leaves cat waiting for a writer that never comes).
+    const std::string other = option == "-o" ? " --report " + q(t / "r.json") : " -o " + q(t / "p.nc");
+    auto r = testutil::run("timeout 60 cat " + q(t / "pipe") + " > " + q(t / "got") + " & " + q(testutil::acodrill()) + " plan " + plate +
+                           " --iterations 20 -q " + option + " " + q(t / "pipe") + other + "; code=$?; wait; exit $code");
+    EXPECT_EQ(r.code, 0) << option << ": " << r.err;
+    struct stat st {};
+    ASSERT_EQ(::lstat((t / "pipe").c_str(), &st), 0);
+    EXPECT_TRUE(S_ISFIFO(st.st_mode)) << option << ": the FIFO was replaced";
+    if (option == "-o") {
+      EXPECT_EQ(slurp(t / "got"), slurp(t / "plain.nc"));
+    } else {  // the same report but for the clock and the program's name
+      auto got = nlohmann::json::parse(slurp(t / "got")), plain = nlohmann::json::parse(slurp(t / "plain.json"));
+      for (auto* j : {&got, &plain}) {
+        (*j)["solver"].erase("wall_s"), (*j)["solver"].erase("thread_busy_s"), j->erase("program");
+      }
+      EXPECT_EQ(got, plain);
+    }
+    std::filesystem::remove(t / "pipe");
+  }
+}
+
+TEST(cli_test, a_directory_given_as_an_output_is_one_line_before_any_work) {
+  TempDir t;
+  std::filesystem::create_directory(t / "out");
+  const std::string plate = q(testutil::source_dir() + "/samples/plate70.dxf");
+  for (const std::string option : {"-o", "--report", "--svg", "--setup-sheet"}) {
+    // A minute of iterations: refused before them, or the test's own timeout says it was not.
+    const std::string program = option == "-o" ? "" : " -o " + q(t / "p.nc");
+    auto r = acodrill_run("plan " + plate + " --time-limit 60 --iterations 1000000 " + option + " " + q(t / "out") + program);
+    EXPECT_EQ(r.code, 2) << option << ": " << r.err;
+    EXPECT_EQ(testutil::count_lines(r.err), 1) << r.err;
+    EXPECT_THAT(r.err, ::testing::StartsWith("acodrill: error: " + t / "out" + ": is a directory")) << option;
+    EXPECT_TRUE(std::filesystem::is_directory(t / "out"));
+    EXPECT_TRUE(std::filesystem::is_empty(t / "out"));
+    EXPECT_FALSE(std::filesystem::exists(t / "p.nc")) << option << ": nothing is written when one output cannot be";
+  }
+  auto tsp = acodrill_run("tsp " + q(data("tsplib/d198.tsp")) + " --iterations 100000 --tour " + q(t / "out"));
+  EXPECT_EQ(tsp.code, 2) << tsp.err;
+  EXPECT_THAT(tsp.err, ::testing::HasSubstr("is a directory"));
+}
+
+// /dev/stdout names the descriptor the shell opened: the program goes there,
+// appended after `>>` as any output is; a symbolic link stays a link.
+TEST(cli_test, dev_stdout_and_a_symbolic_link_are_written_through) {
+  TempDir t;
+  const std::string plate = q(testutil::source_dir() + "/samples/plate10.dxf");
+  ASSERT_EQ(acodrill_run("plan " + plate + " --iterations 20 -q -o " + q(t / "plain.nc")).code, 0);
+  spit(t / "log", "before\n");
+  auto r = testutil::run("(" + q(testutil::acodrill()) + " plan " + plate + " --iterations 20 -q -o /dev/stdout >> " + q(t / "log") + ")");
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(slurp(t / "log"), "before\n" + slurp(t / "plain.nc"));
+  spit(t / "target.nc", "old\n");
+  std::filesystem::create_symlink(t / "target.nc", t / "link.nc");
+  ASSERT_EQ(acodrill_run("plan " + plate + " --iterations 20 -q -o " + q(t / "link.nc")).code, 0);
+  EXPECT_TRUE(std::filesystem::is_symlink(t / "link.nc"));
+  EXPECT_EQ(slurp(t / "target.nc"), slurp(t / "plain.nc"));
+}
+
+// A character device, as root only: made by mknod in a temporary folder, and
+// /dev/null itself inside a mount namespace of the test's own, where /dev is
+// a fresh tmpfs holding a fresh null device; never the machine's /dev/null.
+TEST(cli_test, a_character_device_is_written_in_place_never_replaced) {
+  if (::geteuid() != 0) GTEST_SKIP() << "mknod and mount namespaces need root";
+  TempDir t;
+  const std::string plate = q(testutil::source_dir() + "/samples/plate10.dxf");
+  if (::mknod((t / "null").c_str(), S_IFCHR | 0666, ::makedev(1, 3)) != 0) GTEST_SKIP() << "no device nodes here (nodev)";
+  auto r = acodrill_run("plan " + plate + " --iterations 20 -q -o " + q(t / "null") + " --report " + q(t / "null"));
+  EXPECT_EQ(r.code, 0) << r.err;
+  struct stat st {};
+  ASSERT_EQ(::lstat((t / "null").c_str(), &st), 0);
+  EXPECT_TRUE(S_ISCHR(st.st_mode)) << "the device was replaced by a file";
+  auto probe = testutil::run("unshare --mount --propagation private true");
+  if (probe.code != 0) GTEST_SKIP() << "no mount namespace here: " << probe.err;
+  auto ns = testutil::run("unshare --mount --propagation private sh -c " +
+                          q("mount -t tmpfs tmpfs /dev && mknod -m 666 /dev/null c 1 3 && " + q(testutil::acodrill()) + " plan " +
+                            plate + " --iterations 20 -q -o /dev/null --report /dev/null --svg /dev/null && test -c /dev/null && ls /dev"));
+  EXPECT_EQ(ns.code, 0) << ns.err;
+  EXPECT_EQ(ns.out, "null\n") << "/dev/null is still the device and nothing was left beside it";
 }

@@ -374,6 +374,9 @@ int main(int argc, char** argv) {
       jobs.swap(mine);
     }
 
+    // A sweep takes hours: an output that can never be written is said now.
+    app::check_output_path(out);
+    app::check_output_path(summary);
     const bool tty = ::isatty(STDERR_FILENO);
     const auto t0 = std::chrono::steady_clock::now();
     std::vector<app::BenchRun> runs;

@@ -121,6 +121,7 @@ int cmd_tsp(const std::string& input, const std::string& tour, const job::Solver
   app::InputOptions io;
   app::LoadedHoles loaded = app::load_holes(input, io);
   if (loaded.holes.empty()) throw app::UserError(input, 0, "no nodes");
+  app::check_output_path(tour);
   params.time_limit_s = app::time_left(params.time_limit_s, seconds_since_start());
   aco::Problem p;
   p.metric = formats::tsplib_metric(loaded);  // the instance's own rounding: EUC_2D, CEIL_2D, ATT

@@ -112,8 +112,10 @@ job::ProgressFn progress_printer(const PlanArgs& a) {
 }  // namespace
 
 int cmd_plan(PlanArgs& a, const InputArgs& in) {
-  // Refuse to overwrite an input with the program before doing any work.
+  // Refuse, before doing any work, an output that can never be written (a
+  // directory) or that would overwrite an input.
   for (const std::string* out : {&a.output, &a.report, &a.svg, &a.svg_compare, &a.convergence, &a.excellon, &a.gerber, &a.setup_sheet}) {
+    app::check_output_path(*out);
     for (const std::string& input : a.inputs) {
       if (!out->empty() && app::same_file(input, *out)) throw app::UserError(*out, 0, "output would overwrite the input file " + input);
     }

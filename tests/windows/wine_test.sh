@@ -85,6 +85,18 @@ else bad "the existing file was touched or a temporary is left"; fi
 wine "$exe" plan "$(winpath "$root/samples/plate10.dxf")" -o "$(winpath "$work/kept.ngc")" -q --iterations 5
 if tail -n 2 "$work/kept.ngc" | head -n 1 | grep -q '^M30' && [ -z "$(ls "$work" | grep '\.tmp-')" ]; then ok "an existing program is replaced by the new one"
 else bad "the program was not replaced: $(head -c 100 "$work/kept.ngc")"; fi
+# Issue 85: a device is written in place, never replaced: NUL and nul.txt (Windows' null device in any
+# case and with any extension) plan with exit 0 and leave no file of that name nor any temporary; a
+# folder given as the program is one line, exit 2.
+for dev in NUL nul.txt; do
+  if (cd "$work" && wine "$exe" plan "$(winpath "$root/samples/plate10.dxf")" -o "$dev" --report "$dev" -q --iterations 5 2>"$work/err") &&
+     [ ! -e "$work/$dev" ] && [ -z "$(ls "$work" | grep -i '^nul\|\.tmp-')" ]; then ok "-o $dev: written to the device, no file made"
+  else bad "-o $dev: $(cat "$work/err"), files: $(ls "$work" | tr '\n' ' ')"; fi
+done
+mkdir -p "$work/a folder"
+wine "$exe" plan "$(winpath "$root/samples/plate10.dxf")" -o "$(winpath "$work/a folder")" 2>"$work/err"; code=$?
+if [ "$code" = 2 ] && [ "$(grep -c . "$work/err")" = 1 ] && grep -q 'is a directory' "$work/err"; then ok "-o a folder: exit 2, one line"
+else bad "-o a folder: exit $code: $(cat "$work/err")"; fi
 # Usage errors and --help.
 wine "$exe" plan 2>"$work/err" >/dev/null; code=$?
 if [ "$code" = 2 ] && [ "$(grep -c . "$work/err")" = 1 ]; then ok "usage error: exit 2, one line"; else bad "usage error: exit $code"; fi
