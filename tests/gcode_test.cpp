@@ -159,3 +159,19 @@ TEST(gcode_test, clamps_switch_to_the_initial_plane_only_where_needed) {
   // And the interpreter agrees on where each hole is.
   EXPECT_EQ(gcode::interpret(prog).holes.size(), 4u);
 }
+
+// Issue 85: the program stays ASCII for the control; a name in another
+// script reads as one character a character, letters with diacritics as
+// their base letters.
+TEST(gcode_test, comments_write_names_in_any_script_one_character_a_character) {
+  EXPECT_EQ(gcode::comment_text("Łukasz Müller, façade"), "LUKASZ MULLER, FACADE");
+  EXPECT_EQ(gcode::comment_text("плата 測試 board v2.drl"), "????? ?? BOARD V2.DRL");
+  EXPECT_EQ(gcode::comment_text("Æbleø Straße Œuvre Þór ĳs"), "AEBLEO STRASSE OEUVRE THOR IJS");
+  EXPECT_EQ(gcode::comment_text("Ștefan Țară Ñandú Åsa Đorđe ÿ"), "STEFAN TARA NANDU ASA DORDE Y");
+  EXPECT_EQ(gcode::comment_text("3×4 ÷ 2 (µm) ° 😀"), "3?4 ? 2 /?M/ ? ?");
+  // Malformed UTF-8: each stray byte is one '?', and what follows reads on.
+  EXPECT_EQ(gcode::comment_text(std::string("a\xC3") + "b\xE2\x82" + "c\xFF" + "d\xC3"), "A?B?C?D?");  // E2 82 is one character cut short
+  for (const std::string& s : {std::string("плата 測試 board v2.drl"), std::string("\xF0\x9F\x98\x80\x80\x80 é")}) {
+    for (char c : gcode::comment_text(s)) EXPECT_LT(static_cast<unsigned char>(c), 128) << s;
+  }
+}

@@ -107,14 +107,83 @@ class Writer {
   const ProgramSettings& s_;
 };
 
+// The letters with diacritics of Latin-1 Supplement and Latin Extended-A,
+// U+00C0..U+017F, as their base letters (uppercase: comments are), one
+// character a code point: '?' for what is no letter (the multiplication and
+// division signs), '*' for the letters written with two (latin_pair).
+constexpr char kLatinBase[] =
+    "AAAAAA*CEEEEIIIIDNOOOOO?OUUUUY**"   // U+00C0 À..ß
+    "AAAAAA*CEEEEIIIIDNOOOOO?OUUUUY*Y"   // U+00E0 à..ÿ
+    "AAAAAACCCCCCCCDDDDEEEEEEEEEEGGGG"   // U+0100 Ā..ğ
+    "GGGGHHHHIIIIIIIIII**JJKKKLLLLLLL"   // U+0120 Ġ..Ŀ
+    "LLLNNNNNNNNNOOOOOO**RRRRRRSSSSSS"   // U+0140 ŀ..ş
+    "SSTTTTTTUUUUUUUUUUUUWWYYYZZZZZZS";  // U+0160 Š..ſ
+constexpr char32_t kLatinFirst = 0x00C0;
+
+const char* latin_pair(char32_t cp) {
+  switch (cp) {
+    case 0x00C6: case 0x00E6: return "AE";  // Æ æ
+    case 0x00DE: case 0x00FE: return "TH";  // Þ þ
+    case 0x00DF: case 0x1E9E: return "SS";  // ß ẞ
+    case 0x0132: case 0x0133: return "IJ";  // Ĳ ĳ
+    case 0x0152: case 0x0153: return "OE";  // Œ œ
+    default: return nullptr;
+  }
+}
+
+// One code point of UTF-8 at `at`, moving past it. What is not well formed
+// is one U+FFFD for each stray byte or each sequence cut short.
+char32_t next_code_point(const std::string& s, std::size_t& at) {
+  const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(s[k]); };
+  const unsigned char lead = byte(at);
+  const std::size_t extra = lead >= 0xC2 && lead < 0xE0 ? 1 : lead >= 0xE0 && lead < 0xF0 ? 2 : lead >= 0xF0 && lead < 0xF5 ? 3 : 0;
+  ++at;
+  if (lead < 0x80) return lead;
+  if (extra == 0) return 0xFFFD;
+  char32_t cp = lead & (0x3F >> extra);
+  for (std::size_t k = 0; k < extra; ++k) {
+    if (at + k >= s.size() || (byte(at + k) & 0xC0) != 0x80) {  // cut short
+      at += k;
+      return 0xFFFD;
+    }
+    cp = (cp << 6) | (byte(at + k) & 0x3F);
+  }
+  at += extra;
+  return cp;
+}
+
+// UTF-8 as ASCII, one character a code point (see comment_text); what is
+// outside ASCII comes out uppercase, as comments are.
+std::string ascii_text(const std::string& utf8) {
+  std::string out;
+  out.reserve(utf8.size());
+  for (std::size_t at = 0; at < utf8.size();) {
+    const char32_t cp = next_code_point(utf8, at);
+    if (cp < 0x80) {
+      out += static_cast<char>(cp);
+    } else if (const char* pair = latin_pair(cp)) {
+      out += pair;
+    } else if (cp >= kLatinFirst && cp < kLatinFirst + sizeof kLatinBase - 1) {
+      out += kLatinBase[cp - kLatinFirst];
+    } else if (cp >= 0x0218 && cp <= 0x021B) {  // Romanian Ș ș Ț ț, written with a comma below
+      out += cp < 0x021A ? 'S' : 'T';
+    } else {
+      out += '?';
+    }
+  }
+  return out;
+}
+
 }  // namespace
 
 std::string comment_text(std::string text) {
-  // Comments in parentheses cannot nest; keep them short, uppercase and plain.
+  // Comments in parentheses cannot nest; keep them short, uppercase and plain
+  // ASCII for the control (issue 85: a name in any script, one '?' for each
+  // character that has no Latin letter to stand for it, not one a byte).
+  text = ascii_text(text);
   for (char& ch : text) {
     if (ch == '(' || ch == ')') ch = '/';
     else if (ch == '\n' || ch == '\r') ch = ' ';
-    else if (static_cast<unsigned char>(ch) >= 128) ch = '?';
     else ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
   }
   return text;

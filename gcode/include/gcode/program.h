@@ -119,8 +119,12 @@ std::string tool_name(const Tool& tool);
 // cycles (GRBL, Marlin); "G2 helix" for an end mill.
 std::string cycle_description(const Tool& tool, Dialect dialect);
 
-// Text made safe for a "(...)" comment: parentheses become '/', one line,
-// uppercase ASCII. Never shortened: a long one is wrapped (wrap_words).
+// Text made safe for a "(...)" comment: one line, uppercase ASCII for the
+// control, parentheses become '/'. From UTF-8 (issue 85): a Latin letter with
+// diacritics becomes its base letter (Ł → L, ü → U, ç → C; Æ → AE, ß → SS,
+// Œ → OE, Þ → TH, Ĳ → IJ: Latin-1 Supplement, Latin Extended-A and
+// Romanian's Ș Ț), any other character outside ASCII, and each malformed
+// byte, one '?'. Never shortened: a long one is wrapped (wrap_words).
 std::string comment_text(std::string text);
 
 // The text in lines of at most `width` characters, broken between words
