@@ -747,3 +747,27 @@ TEST(cli_test, a_character_device_is_written_in_place_never_replaced) {
   EXPECT_EQ(ns.code, 0) << ns.err;
   EXPECT_EQ(ns.out, "null\n") << "/dev/null is still the device and nothing was left beside it";
 }
+
+// Issue 85: the demo says where each output went once, in its closing lines,
+// and how to check the program; acodrill's own summary keeps its file lines
+// for everyone else.
+TEST(cli_test, scripts_demo_names_each_output_once_and_the_command_to_check_it) {
+  TempDir t;
+  auto r = testutil::run("ACO_BUILD_DIR=" + q(ACO_BUILD_DIR) + " ACO_DEMO_OUT=" + q(t / "out") + " " +
+                         q(testutil::source_dir() + "/scripts/demo"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::string said = r.out + r.err;
+  for (const std::string file : {"plate70.nc", "plate70.json", "plate70.convergence.csv", "plate70.svg", "plate70.compare.svg",
+                                 "plate70.setup.html"}) {
+    const std::string path = t / "out/" + file;
+    EXPECT_TRUE(std::filesystem::exists(path)) << path;
+    std::size_t times = 0;
+    for (std::size_t at = said.find(path); at != std::string::npos; at = said.find(path, at + 1)) ++times;
+    EXPECT_EQ(times, file == "plate70.nc" ? 2u : 1u) << file << " in:\n" << said;  // the program: where, and in the check
+  }
+  EXPECT_THAT(said, ::testing::HasSubstr("acodrill verify " + t / "out/plate70.nc --holes samples/plate70.dxf"));
+  EXPECT_THAT(said, ::testing::HasSubstr("saved vs input order"));  // acodrill's summary, the rest of it
+  // And the summary still names its files for everyone else.
+  auto plan = acodrill_run("plan " + q(testutil::source_dir() + "/samples/plate10.dxf") + " --iterations 5 -o " + q(t / "p.nc"));
+  EXPECT_THAT(plan.err, ::testing::HasSubstr("  program: " + t / "p.nc"));
+}
