@@ -320,14 +320,14 @@ TEST(cli_test, slots_are_drilled_in_their_order_or_named_where_skipped) {
                         " --setup-sheet " + q(t / "s.html"));
   ASSERT_EQ(s.code, 0) << s.err;
   EXPECT_EQ(s.err, "") << "quiet";
-  EXPECT_THAT(slurp(t / "s.nc"), ::testing::HasSubstr("(NOT DRILLED: LINE 7: SLOT 1.000 MM WIDE FROM X0.000 Y0.000 TO X2.000 Y0.000)\n(MM, --SLOTS SKIP)"));
+  EXPECT_THAT(slurp(t / "s.nc"), ::testing::HasSubstr("(NOT MADE: LINE 7: SLOT 1.000 MM WIDE FROM X0.000 Y0.000 TO X2.000 Y0.000)\n(MM, --SLOTS SKIP)"));
   EXPECT_EQ(gcode::interpret(slurp(t / "s.nc")).holes.size(), 3u);
   auto report = nlohmann::json::parse(slurp(t / "r.json"));
   ASSERT_EQ(report["not_drilled"].size(), 1u);
   EXPECT_EQ(report["not_drilled"][0]["line"].get<int>(), 7);
-  EXPECT_THAT(slurp(t / "s.html"), ::testing::HasSubstr("<b>Not drilled</b>: line 7: slot 1.000 mm wide"));
+  EXPECT_THAT(slurp(t / "s.html"), ::testing::HasSubstr("<b>Not made</b>: line 7: slot 1.000 mm wide"));
   auto noisy = acodrill_run("plan " + q(t / "s.drl") + " -o " + q(t / "n.nc") + " --slots skip");
-  EXPECT_THAT(noisy.err, ::testing::HasSubstr("NOT DRILLED: 1 feature(s), first: line 7: slot"));
+  EXPECT_THAT(noisy.err, ::testing::HasSubstr("NOT MADE: 1 feature(s), first: line 7: slot"));
 }
 
 // Issues 23 and 25: the built-in machine classes. `machines` lists them as
@@ -679,11 +679,11 @@ TEST(cli_test, a_fifo_given_as_an_output_is_written_in_place_and_stays_a_fifo) {
     if (option == "-o") {
       EXPECT_EQ(slurp(t / "got"), slurp(t / "plain.nc"));
     } else {  // the same report but for the clock and the program's name
-      auto got = nlohmann::json::parse(slurp(t / "got")), plain = nlohmann::json::parse(slurp(t / "plain.json"));
-      for (auto* j : {&got, &plain}) {
+      auto got = nlohmann::json::parse(slurp(t / "got")), as_file = nlohmann::json::parse(slurp(t / "plain.json"));
+      for (auto* j : {&got, &as_file}) {
         (*j)["solver"].erase("wall_s"), (*j)["solver"].erase("thread_busy_s"), j->erase("program");
       }
-      EXPECT_EQ(got, plain);
+      EXPECT_EQ(got, as_file);
     }
     std::filesystem::remove(t / "pipe");
   }
