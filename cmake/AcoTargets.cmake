@@ -34,11 +34,11 @@ function(aco_add_executable name)
   aco_target_defaults(${name})
 endfunction()
 
-# aco_add_test(NAME [DEPS ...] [LOCK resource]): tests/NAME.cpp linked with
-# gtest_main and DEPS; LOCK keeps its tests from running in parallel with any
-# other test holding the same lock.
+# aco_add_test(NAME [DEPS ...] [LOCK resource] [SERIAL]): tests/NAME.cpp linked
+# with gtest_main and DEPS; LOCK keeps its tests from running in parallel with
+# any other test holding the same lock; SERIAL runs them with no other test.
 function(aco_add_test name)
-  cmake_parse_arguments(ARG "" "LOCK" "DEPS" ${ARGN})
+  cmake_parse_arguments(ARG "SERIAL" "LOCK" "DEPS" ${ARGN})
   add_executable(${name} ${name}.cpp)
   target_link_libraries(${name} PRIVATE GTest::gtest GTest::gtest_main GTest::gmock ${ARG_DEPS})
   aco_target_defaults(${name})
@@ -49,6 +49,9 @@ function(aco_add_test name)
   if(ARG_LOCK)
     gtest_discover_tests(${name} WORKING_DIRECTORY ${PROJECT_SOURCE_DIR} DISCOVERY_TIMEOUT 60
                          PROPERTIES RESOURCE_LOCK ${ARG_LOCK})
+  elseif(ARG_SERIAL)
+    gtest_discover_tests(${name} WORKING_DIRECTORY ${PROJECT_SOURCE_DIR} DISCOVERY_TIMEOUT 60
+                         PROPERTIES RUN_SERIAL TRUE)
   else()
     gtest_discover_tests(${name} WORKING_DIRECTORY ${PROJECT_SOURCE_DIR} DISCOVERY_TIMEOUT 60)
   endif()
