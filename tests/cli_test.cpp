@@ -320,7 +320,7 @@ TEST(cli_test, slots_are_drilled_in_their_order_or_named_where_skipped) {
                         " --setup-sheet " + q(t / "s.html"));
   ASSERT_EQ(s.code, 0) << s.err;
   EXPECT_EQ(s.err, "") << "quiet";
-  EXPECT_THAT(slurp(t / "s.nc"), ::testing::HasSubstr("(NOT MADE: LINE 7: SLOT 1.000 MM WIDE FROM X0.000 Y0.000 TO X2.000 Y0.000)\n(MM, --SLOTS SKIP)"));
+  EXPECT_THAT(slurp(t / "s.nc"), ::testing::HasSubstr("(NOT MADE: LINE 7: SLOT 1.000 MM WIDE FROM X0.000 Y0.000 TO X2.000 Y0.000 MM,)\n(--SLOTS SKIP)"));
   EXPECT_EQ(gcode::interpret(slurp(t / "s.nc")).holes.size(), 3u);
   auto report = nlohmann::json::parse(slurp(t / "r.json"));
   ASSERT_EQ(report["not_drilled"].size(), 1u);

@@ -61,6 +61,12 @@ void add_input_options(CLI::App* cmd, cli::InputArgs& args) {
                   "How round a contour must be to be a hole: the largest gap between it and its circle, in percent of "
                   "the radius (default 2.5: polygons of 14 sides or more; 10 takes 8 sides)")
       ->check(CLI::Range(0.01, 30.0));
+  cmd->add_option("--concentric", a.concentric,
+                  "features (default) | separate: how a DXF's concentric circles are read. features: one hole feature, "
+                  "the smallest circle the hole, drilled through; a larger one a counterbore or countersink (its layer "
+                  "CBORE, CSK, ... or a hole callout says which), never drilled through; a circle with a thread's arc "
+                  "(about 3/4 of a turn at a standard major diameter) a tapped hole, drilled at the tap drill. "
+                  "separate: every circle a hole of its own, drilled through");
   cmd->add_option("--dxf-units", a.dxf_units,
                   "mm | cm | m | inch | feet: the unit a DXF is drawn in, whatever its $INSUNITS header says (Onshape "
                   "writes inch for drawings made in mm)");
@@ -241,10 +247,16 @@ int main(int argc, char** argv) {
 
   std::string holes_input, holes_format = "csv";
   auto* holes_cmd = cli.add_subcommand("holes", "Print the holes an input holds (mm, world coordinates)");
-  holes_cmd->footer("Example:\n  acodrill holes plate.dxf --format csv --layer 'DRILL*' > holes.csv");
+  holes_cmd->footer("Examples:\n  acodrill holes plate.dxf --format csv --layer 'DRILL*' > holes.csv\n"
+                    "  acodrill holes plate.dxf --features      what each hole is: plain, tapped, counterbore, ...");
   holes_cmd->add_option("input", holes_input, "Input file or - for stdin")->required();
   holes_cmd->add_option("--format", holes_format, "Output format: csv (the default)");
   holes_cmd->add_flag("-q,--quiet", quiet, "No summary on stderr");
+  bool holes_features = false;
+  holes_cmd->add_flag("--features", holes_features,
+                      "One row a hole feature instead of one a hole: x_mm,y_mm,kind,diameter_mm,outer_diameter_mm,thread,"
+                      "layer,evidence; kind is plain, tapped, counterbore, countersink or undecided (a DXF's concentric "
+                      "circles and thread arcs; other inputs' holes are plain)");
   // `holes` lists the holes the input holds (the contract: every hit, every
   // round flash), so slots are not made into rows of holes here unless asked.
   cli::InputArgs holes_in;
@@ -314,7 +326,7 @@ int main(int argc, char** argv) {
       plan.inputs = cli::read_once(plan.inputs, plan.quiet);
       return cli::cmd_plan(plan, in_args);
     }
-    if (*holes_cmd) return cli::cmd_holes(holes_input, holes_in, holes_format, quiet);
+    if (*holes_cmd) return cli::cmd_holes(holes_input, holes_in, holes_format, holes_features, quiet);
     if (*tsp_cmd) return cli::cmd_tsp(tsp_input, tsp_tour, tsp_solver, quiet);
     if (*verify_cmd) {
       verify.holes = cli::read_once(verify.holes, quiet);

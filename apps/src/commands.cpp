@@ -80,6 +80,8 @@ void print_warnings(const formats::LoadedHoles& loaded, const std::string& path,
     summary += ", " + std::to_string(loaded.slots_drilled) + " slot(s) drilled as " + std::to_string(loaded.slot_holes) + " holes";
   }
   if (loaded.slots_milled) summary += ", " + std::to_string(loaded.slots_milled) + " slot(s) milled along their length";
+  const std::string features = formats::features_summary(loaded.features);
+  if (!features.empty()) summary += "; hole features: " + features;
   if (!loaded.skipped.empty()) {
     const formats::Note& n = loaded.skipped.front();
     summary += std::string("; ") + skipped_label + ": " + std::to_string(loaded.skipped.size()) + " feature(s), first: " +
@@ -98,9 +100,13 @@ void print_warnings(const formats::LoadedHoles& loaded, const std::string& path,
   if (warnings == 1) summary += "; warning: " + first;
   if (warnings > 1) summary += "; " + std::to_string(warnings) + " warnings, first: " + first;
   std::cerr << "acodrill: " << (path == "-" ? "<stdin>" : path) << ": " << summary << "\n";
+  for (const formats::Note& n : loaded.feature_warnings) {
+    std::cerr << "acodrill: " << (path == "-" ? "<stdin>" : path) << (n.line ? ":" + std::to_string(n.line) : std::string())
+              << ": warning: " << n.message << "\n";
+  }
 }
 
-int cmd_holes(const std::string& input, const InputArgs& in, const std::string& format, bool quiet) {
+int cmd_holes(const std::string& input, const InputArgs& in, const std::string& format, bool features, bool quiet) {
   if (format != "csv") throw app::UserError("--format must be csv");
   if (in.settings.slots == "mill") throw app::UserError("--slots mill is for plan and verify; holes lists what the input holds");
   app::LoadedHoles loaded = app::load_holes(input, job::input_options(read_input_settings(in)));
@@ -109,10 +115,12 @@ int cmd_holes(const std::string& input, const InputArgs& in, const std::string& 
     loaded.duplicates_removed = aco::remove_duplicate_holes(loaded.holes);
     loaded.drilled_again = 0;
   }
-  const std::string out = job::holes_csv(loaded.holes);
+  const std::string out = features ? job::features_csv(loaded) : job::holes_csv(loaded.holes);
   std::cout << out;
   std::cout.flush();
-  print_warnings(loaded, input, quiet, "not listed (slots and routes; plan drills slots unless --slots skip)");
+  print_warnings(loaded, input, quiet,
+                 loaded.slots.empty() && !loaded.features.empty() ? "plan does not make"
+                                                                    : "not listed (slots and routes; plan drills slots unless --slots skip)");
   return 0;
 }
 

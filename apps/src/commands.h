@@ -33,7 +33,8 @@ struct PlanArgs {
 };
 
 int cmd_plan(PlanArgs& a, const InputArgs& in);
-int cmd_holes(const std::string& input, const InputArgs& in, const std::string& format, bool quiet);
+// `features`: one row a hole feature (--features) instead of one a hole.
+int cmd_holes(const std::string& input, const InputArgs& in, const std::string& format, bool features, bool quiet);
 int cmd_tsp(const std::string& input, const std::string& tour, const job::SolverSettings& s, bool quiet);
 struct VerifyArgs {
   std::string program, origin, panel, pitch;
@@ -50,7 +51,7 @@ std::vector<std::string> read_once(const std::vector<std::string>& paths, bool q
 // `skipped_label` says what became of what the input holds but the holes leave out;
 // `holes`: how many holes to say the input gave (default: those it holds).
 void print_warnings(const formats::LoadedHoles& loaded, const std::string& path, bool quiet,
-                    const char* skipped_label = "NOT DRILLED", std::optional<std::size_t> holes = std::nullopt);
+                    const char* skipped_label = "NOT MADE", std::optional<std::size_t> holes = std::nullopt);
 
 // --machine NAME_OR_FILE: a built-in class by name, unless a file of that name
 // is here, or a profile file (read into `profile`).

@@ -26,7 +26,7 @@ void print_summary(const PlanArgs& a, const job::Result& r) {
     print_warnings(r.inputs.holes, a.inputs.front(), a.quiet);
   } else {
     for (std::size_t k = 0; k < r.inputs.parts.size(); ++k) {
-      print_warnings(r.inputs.parts[k], r.inputs.sources[k].file, a.quiet, "NOT DRILLED", r.inputs.sources[k].holes);
+      print_warnings(r.inputs.parts[k], r.inputs.sources[k].file, a.quiet, "NOT MADE", r.inputs.sources[k].holes);
     }
     if (r.inputs.parts.size() > 1 && r.inputs.holes.duplicates_removed) {
       std::fprintf(stderr, "acodrill: %zu hole(s) in more than one input drilled once\n", r.inputs.holes.duplicates_removed);

@@ -25,6 +25,10 @@ struct Piece {
   std::array<double, 3> extrusion{0, 0, 1};  // the OCS the points are in ((0,0,1): world)
   std::string_view layer;
   std::uint32_t line = 0;
+  // An ARC's own circle (in its OCS) and span, kept beside its points: a
+  // tapped hole's thread is drawn with one. 0: not an ARC.
+  std::array<double, 3> arc_center{0, 0, 0};
+  double arc_radius = 0.0, arc_span_deg = 0.0;
 };
 
 // A piece placed in the world (drawing units, XY).

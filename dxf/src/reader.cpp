@@ -1,9 +1,11 @@
 // Layers 2-4 of the DXF reader: sections → entities → holes.
 //
 // Only what makes a hole is interpreted: the HEADER's $INSUNITS and $ACADVER,
-// BLOCK_RECORD handles (to recognise paper space), BLOCK definitions, and
-// CIRCLE / INSERT entities. Everything else is skipped tag by tag, so an
-// entity type we have never seen cannot break the read.
+// BLOCK_RECORD handles (to recognise paper space), text STYLEs' fonts, BLOCK
+// definitions, and CIRCLE / INSERT entities; besides, what a hole feature is
+// drawn with (issue 82): ARCs, and the texts of TEXT, MTEXT, MULTILEADER,
+// LEADER and DIMENSION. Everything else is skipped tag by tag, so an entity
+// type we have never seen cannot break the read.
 #include <algorithm>
 #include <array>
 #include <cctype>
@@ -119,12 +121,24 @@ struct Insert {
   std::uint32_t line = 0;
 };
 
+// A text entity as read (issue 82: hole callouts): its points in its space
+// (OCS ignored: annotations lie in the drawing's plane).
+struct TextEntity {
+  std::string text;
+  std::vector<Vec3> points;  // insertion point first, then leader or dimension points
+  std::string_view layer, style, handle, annotation;  // annotation: a LEADER's MTEXT (340)
+  bool gdt_font = false;    // its style's font is GD&T (gdt.shx, AIGDT): letters are symbols
+  bool is_leader = false;   // a LEADER: its points go to the text it annotates
+  std::uint32_t line = 0;
+};
+
 struct Block {
   std::string name;
   Vec3 base{0, 0, 0};
   std::vector<Circle> circles;
   std::vector<Insert> inserts;
   std::vector<contours::Piece> pieces;  // LINE, ARC, polylines, SPLINE, ELLIPSE: maybe round contours
+  std::vector<TextEntity> texts;
   std::vector<std::pair<bool, std::size_t>> order;  // (is_insert, index): file order
   std::uint32_t line = 0;
 };
@@ -176,6 +190,9 @@ class Parser {
   // A piece of a possible contour, when the entity at tag_ is one (nullopt: skip it).
   std::optional<contours::Piece> read_piece(std::string_view type);
   std::vector<Tag> read_tags();
+  // A TEXT, MTEXT, MULTILEADER, LEADER or DIMENSION at tag_ (nullopt: in paper space, or no text).
+  std::optional<TextEntity> read_text(std::string_view type);
+  void place_text(const TextEntity& t, const Affine& to_world);
   void place_piece(const contours::Piece& p, const Affine& to_world);
   void add_round_contours(double unit);
   void check_units();
@@ -198,7 +215,16 @@ class Parser {
   std::vector<Circle> model_circles_;
   std::vector<Insert> model_inserts_;
   std::vector<contours::Piece> model_pieces_;
+  std::vector<TextEntity> model_texts_;
+  std::unordered_set<std::string> gdt_styles_;  // upper-case names of text styles whose font is GD&T
   std::vector<contours::Placed> placed_;
+  std::vector<DrawnArc> arcs_;  // drawing units until expand() scales them
+  // Texts as placed (result_.texts, drawing units until expand() scales them)
+  // and the LEADERs' points, joined to the texts they annotate by handle.
+  static constexpr std::size_t kMaxTexts = 200'000;  // a callout past them is not read
+  std::size_t texts_placed_ = 0;
+  std::unordered_map<std::string, std::size_t> text_by_handle_;
+  std::vector<std::pair<std::string, std::vector<aco::Point2>>> leaders_;
   std::size_t placed_points_ = 0;
   bool contours_cut_ = false;
   // Model-space entities in file order: (is_insert, index into the vector above).
@@ -248,6 +274,10 @@ Fields Parser::read_fields(bool is_insert) {
     }
   }
   return f;
+}
+
+bool is_text_type(std::string_view type) {
+  return type == "TEXT" || type == "MTEXT" || type == "MULTILEADER" || type == "MLEADER" || type == "LEADER" || type == "DIMENSION";
 }
 
 bool is_piece_type(std::string_view type) {
@@ -334,6 +364,14 @@ std::optional<contours::Piece> Parser::read_piece(std::string_view type) {
   } else if (type == "ARC") {
     contours::add_arc(p, {number(10, 0), number(20, 0), number(30, 0)}, number(40, 0), number(50, 0), number(51, 360));
     if (!(number(40, 0) > 0)) return std::nullopt;
+    const double start = number(50, 0), end = number(51, 360);
+    if (std::isfinite(end - start) && std::fabs(start) <= 1e9 && std::fabs(end) <= 1e9) {
+      double span = std::fmod(end - start, 360.0);
+      if (span <= 1e-12) span += 360.0;
+      p.arc_center = {number(10, 0), number(20, 0), number(30, 0)};
+      p.arc_radius = number(40, 0);
+      p.arc_span_deg = span;
+    }
   } else if (type == "ELLIPSE") {
     // World coordinates: centre, major axis end (relative), minor/major ratio, start and end parameters.
     const Vec3 c{number(10, 0), number(20, 0), number(30, 0)}, major{number(11, 0), number(21, 0), number(31, 0)};
@@ -427,6 +465,17 @@ std::optional<contours::Piece> Parser::read_piece(std::string_view type) {
 
 void Parser::place_piece(const contours::Piece& p, const Affine& to_world) {
   const Affine m = to_world.then_after(ocs_to_wcs(make_ocs(p.extrusion, p.line)));
+  if (p.arc_radius > 0 && arcs_.size() < options_.max_holes) {
+    // The arc's circle seen from above, as emit_circle sees a circle: a circle
+    // only under a uniform scale in a plane parallel to XY.
+    const Vec3 c = m.apply(p.arc_center);
+    const Vec3 u = m.apply_linear({p.arc_radius, 0, 0}), v = m.apply_linear({0, p.arc_radius, 0});
+    const double lu = std::hypot(u[0], u[1]), lv = std::hypot(v[0], v[1]), tol = 1e-6 * std::max(lu, lv);
+    if (std::fabs(lu - lv) <= tol && std::fabs(u[0] * v[0] + u[1] * v[1]) <= tol * lu && lu > 0 && std::isfinite(c[0]) &&
+        std::isfinite(c[1])) {
+      arcs_.push_back({{c[0], c[1]}, 2.0 * lu, p.arc_span_deg, std::string(p.layer), p.line});
+    }
+  }
   contours::Placed out;
   out.kind = p.kind;
   out.closed = p.closed;
@@ -454,6 +503,85 @@ void Parser::place_piece(const contours::Piece& p, const Affine& to_world) {
   placed_.push_back(std::move(out));
 }
 
+std::optional<TextEntity> Parser::read_text(std::string_view type) {
+  TextEntity t;
+  t.line = tag_.line;
+  t.layer = "0";
+  const std::vector<Tag> tags = read_tags();
+  bool paper = false;
+  std::string_view owner;
+  std::string chunks, last;  // MTEXT: 3 (chunks of 250) then 1
+  std::optional<Vec3> p11;
+  std::vector<Vec3> points;  // LEADER, MULTILEADER, DIMENSION: every point given
+  double measured = 0.0;
+  bool has_measured = false;
+  for (const Tag& g : tags) {
+    switch (g.code) {
+      case 1: last = std::string(g.value); break;
+      case 3: if (type == "MTEXT") chunks += std::string(g.value); break;
+      case 304: if (type == "MULTILEADER" || type == "MLEADER") chunks += std::string(g.value); break;
+      case 5: t.handle = trim(g.value); break;
+      case 7: t.style = trim(g.value); break;
+      case 8: t.layer = trim(g.value); break;
+      case 42: if (type == "DIMENSION") measured = parse_double(g), has_measured = true; break;
+      case 67: paper = parse_int(g, result_.diagnostics) == 1; break;
+      case 330: if (owner.empty()) owner = trim(g.value); break;
+      case 340: if (type == "LEADER") t.annotation = trim(g.value); break;
+      case 10: case 11: case 12: case 13: case 14: case 15: case 16:
+        points.push_back({parse_double(g), 0, 0});
+        break;
+      case 20: case 21: case 22: case 23: case 24: case 25: case 26:
+        if (!points.empty()) points.back()[1] = parse_double(g);
+        if (g.code == 21 && !points.empty()) p11 = points.back();
+        break;
+      default: break;
+    }
+  }
+  if (is_paper(paper, owner) || points.empty()) return std::nullopt;
+  if (type == "LEADER") {
+    t.is_leader = true;
+    t.points = std::move(points);  // its vertices, the arrowhead first
+    return t;
+  }
+  t.text = type == "MTEXT" ? chunks + last : type == "MULTILEADER" || type == "MLEADER" ? chunks : last;
+  if (type == "DIMENSION") {
+    // "<>" stands for the measured value; an empty text is that value alone.
+    const std::string value = has_measured ? std::to_string(measured) : std::string();
+    if (t.text.empty()) t.text = "<>";
+    for (std::size_t at = t.text.find("<>"); at != std::string::npos; at = t.text.find("<>", at + value.size())) {
+      t.text.replace(at, 2, value);
+    }
+  }
+  if (t.text.empty()) return std::nullopt;
+  // The insertion point first: a justified TEXT stands at its second point.
+  if (type == "TEXT" && p11 && (std::fabs((*p11)[0]) > 0 || std::fabs((*p11)[1]) > 0)) t.points.push_back(*p11);
+  else if (type == "DIMENSION" && p11) t.points.push_back(*p11);
+  for (const Vec3& q : points) t.points.push_back(q);
+  t.gdt_font = gdt_styles_.count(upper(t.style)) != 0;
+  return t;
+}
+
+void Parser::place_text(const TextEntity& t, const Affine& to_world) {
+  if (texts_placed_ >= kMaxTexts) return;
+  DrawnText out;
+  out.text = t.text;
+  out.layer = std::string(t.layer);
+  out.line = t.line;
+  out.gdt_font = t.gdt_font;
+  for (const Vec3& q : t.points) {
+    const Vec3 w = to_world.apply(q);
+    if (std::isfinite(w[0]) && std::isfinite(w[1])) out.anchors.push_back({w[0], w[1]});
+  }
+  if (out.anchors.empty()) return;
+  ++texts_placed_;
+  if (t.is_leader) {
+    leaders_.push_back({std::string(t.annotation), std::move(out.anchors)});
+    return;
+  }
+  if (!t.handle.empty()) text_by_handle_.emplace(upper(t.handle), result_.texts.size());
+  result_.texts.push_back(std::move(out));
+}
+
 void Parser::read_header() {
   // Header variables: (9, $NAME) followed by its value tags, up to the next code 0.
   std::string_view variable;
@@ -477,6 +605,14 @@ void Parser::read_tables() {
       if (!f.handle.empty() && upper(f.name).rfind("*PAPER_SPACE", 0) == 0) {
         paper_records_.insert(upper(f.handle));
       }
+    } else if (tag_.code == 0 && trim(tag_.value) == "STYLE") {
+      // A text style whose font is a GD&T font (gdt.shx, AIGDT.ttf): its letters are symbols.
+      std::string name, font;
+      for (const Tag& g : read_tags()) {
+        if (g.code == 2) name = upper(trim(g.value));
+        if (g.code == 3 || g.code == 4) font += upper(trim(g.value)) + " ";
+      }
+      if (!name.empty() && font.find("GDT") != std::string::npos) gdt_styles_.insert(name);
     } else {
       skip_to_next_0();
     }
@@ -524,6 +660,8 @@ void Parser::read_blocks() {
       current->inserts.push_back(to_insert(f));
     } else if (current != nullptr && !current_is_paper && is_piece_type(type)) {
       if (auto piece = read_piece(type)) current->pieces.push_back(std::move(*piece));
+    } else if (current != nullptr && !current_is_paper && is_text_type(type)) {
+      if (auto text = read_text(type)) current->texts.push_back(std::move(*text));
     } else {
       skip_to_next_0();
     }
@@ -554,6 +692,8 @@ void Parser::read_entities() {
       }
     } else if (is_piece_type(type)) {
       if (auto piece = read_piece(type)) model_pieces_.push_back(std::move(*piece));
+    } else if (is_text_type(type)) {
+      if (auto text = read_text(type)) model_texts_.push_back(std::move(*text));
     } else {
       skip_to_next_0();
     }
@@ -683,7 +823,7 @@ void Parser::expand_insert(const Insert& ins, const Affine& parent, int depth) {
                                   " deep at block \"" + blocks_[index].name + "\"");
   }
   const Block& block = blocks_[index];
-  if (block.order.empty() && block.pieces.empty()) {
+  if (block.order.empty() && block.pieces.empty() && block.texts.empty()) {
     // Nothing to place: count the references without composing a transform each.
     references_ += static_cast<std::size_t>(ins.rows) * static_cast<std::size_t>(ins.columns);
     if (references_ > options_.max_block_references) {
@@ -706,6 +846,7 @@ void Parser::expand_insert(const Insert& ins, const Affine& parent, int depth) {
         else emit_circle(block.circles[i], m);
       }
       for (const contours::Piece& p : block.pieces) place_piece(p, m);
+      for (const TextEntity& t : block.texts) place_text(t, m);
     }
   }
   stack_.pop_back();
@@ -719,6 +860,15 @@ void Parser::expand() {
     else emit_circle(model_circles_[i], identity);
   }
   for (const contours::Piece& p : model_pieces_) place_piece(p, identity);
+  for (const TextEntity& t : model_texts_) place_text(t, identity);
+  // A LEADER's points belong to the MTEXT it annotates: where the callout points.
+  for (auto& [annotation, points] : leaders_) {
+    auto it = text_by_handle_.find(upper(annotation));
+    if (it == text_by_handle_.end()) continue;
+    std::vector<aco::Point2>& anchors = result_.texts[it->second].anchors;
+    anchors.insert(anchors.end(), points.begin(), points.end());
+  }
+  leaders_.clear();
   if (ellipses_ > 0) {
     result_.diagnostics.push_back(
         {Severity::Warning, first_ellipse_line_,
@@ -762,6 +912,20 @@ void Parser::expand() {
   }
   result_.duplicates_removed = aco::remove_duplicate_holes(out, kTol);
   raw_.clear();
+  for (DrawnArc& a : arcs_) {
+    a.center.x *= unit, a.center.y *= unit, a.diameter *= unit;
+    // The layer filter holds for arcs too (a part chosen by its layers); the diameter range does not.
+    const bool on_layer = options_.layers.empty() ||
+                          std::any_of(options_.layers.begin(), options_.layers.end(),
+                                      [&](const std::string& pattern) { return wildcard_match(pattern, a.layer); });
+    if (std::isfinite(a.center.x) && std::isfinite(a.center.y) && std::isfinite(a.diameter) && on_layer) {
+      result_.arcs.push_back(std::move(a));
+    }
+  }
+  arcs_.clear();
+  for (DrawnText& t : result_.texts) {
+    for (aco::Point2& q : t.anchors) q.x *= unit, q.y *= unit;
+  }
   add_round_contours(unit);
   check_units();
 }

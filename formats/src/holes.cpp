@@ -167,12 +167,19 @@ LoadedHoles parse_holes(const std::string& path, std::string_view data, const In
         dxf::ReadResult r = dxf::read_holes(data, o);
         out.format = InputFormat::Dxf;
         out.holes = std::move(r.holes);
+        for (const auto& d : r.diagnostics) out.warnings.push_back({d.line, d.message});
+        if (!options.concentric_separate) {
+          RecognizedFeatures f = recognize_features(out.holes, r.arcs, r.texts, r.unit_mm);
+          out.holes = std::move(f.holes);
+          out.features = std::move(f.features);
+          for (const FeatureNote& n : f.warnings) out.feature_warnings.push_back({n.line, n.message});
+          for (const FeatureNote& n : f.not_made) out.skipped.push_back({n.line, n.message});
+        }
         out.duplicates_removed = r.duplicates_removed;
         out.skipped_by_filter = r.skipped_by_filter;
         out.round_contours = r.round_contours;
         out.round_contour_holes = r.round_contour_holes;
         out.round_contour_kinds = r.round_contour_kinds;
-        for (const auto& d : r.diagnostics) out.warnings.push_back({d.line, d.message});
       } catch (const dxf::ReadError& e) {
         throw InputError(shown, e.line(), e.what());
       }

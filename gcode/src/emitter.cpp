@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "aco/charconv.h"
+#include "aco/utf8.h"
 #include "gcode/drilling.h"
 #include "gcode/program.h"
 #include "hobby_writer.h"
@@ -131,34 +132,13 @@ const char* latin_pair(char32_t cp) {
   }
 }
 
-// One code point of UTF-8 at `at`, moving past it. What is not well formed
-// is one U+FFFD for each stray byte or each sequence cut short.
-char32_t next_code_point(const std::string& s, std::size_t& at) {
-  const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(s[k]); };
-  const unsigned char lead = byte(at);
-  const std::size_t extra = lead >= 0xC2 && lead < 0xE0 ? 1 : lead >= 0xE0 && lead < 0xF0 ? 2 : lead >= 0xF0 && lead < 0xF5 ? 3 : 0;
-  ++at;
-  if (lead < 0x80) return lead;
-  if (extra == 0) return 0xFFFD;
-  char32_t cp = lead & (0x3F >> extra);
-  for (std::size_t k = 0; k < extra; ++k) {
-    if (at + k >= s.size() || (byte(at + k) & 0xC0) != 0x80) {  // cut short
-      at += k;
-      return 0xFFFD;
-    }
-    cp = (cp << 6) | (byte(at + k) & 0x3F);
-  }
-  at += extra;
-  return cp;
-}
-
 // UTF-8 as ASCII, one character a code point (see comment_text); what is
 // outside ASCII comes out uppercase, as comments are.
 std::string ascii_text(const std::string& utf8) {
   std::string out;
   out.reserve(utf8.size());
   for (std::size_t at = 0; at < utf8.size();) {
-    const char32_t cp = next_code_point(utf8, at);
+    const char32_t cp = aco::next_code_point(utf8, at);
     if (cp < 0x80) {
       out += static_cast<char>(cp);
     } else if (const char* pair = latin_pair(cp)) {

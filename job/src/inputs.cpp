@@ -53,6 +53,7 @@ Inputs read_inputs(const std::vector<InputFile>& files, const formats::InputOpti
     }
     chain_base = top;
     for (const formats::Note& n : part.skipped) all.skipped.push_back({n.line, shown + ": " + n.message});
+    all.features.insert(all.features.end(), part.features.begin(), part.features.end());
     for (const formats::Note& n : part.warnings) all.warnings.push_back({n.line, shown + ": " + n.message});
     for (const std::string& a : part.assumptions) all.assumptions.push_back(shown + ": " + a);
     all.round_contours += part.round_contours;

@@ -290,10 +290,10 @@ void PlanJob::Impl::write_hole_program() {
   constexpr std::size_t kListed = 20;
   for (std::size_t i = 0; i < loaded.skipped.size() && i < kListed; ++i) {
     const formats::Note& n = loaded.skipped[i];
-    ps.header_comments.push_back("NOT DRILLED: " + (n.line ? "LINE " + std::to_string(n.line) + ": " : std::string()) + n.message);
+    ps.header_comments.push_back("NOT MADE: " + (n.line ? "LINE " + std::to_string(n.line) + ": " : std::string()) + n.message);
   }
   if (loaded.skipped.size() > kListed) {
-    ps.header_comments.push_back("NOT DRILLED: " + std::to_string(loaded.skipped.size() - kListed) + " MORE (SEE THE REPORT)");
+    ps.header_comments.push_back("NOT MADE: " + std::to_string(loaded.skipped.size() - kListed) + " MORE (SEE THE REPORT)");
   }
   std::ostringstream program;
   const std::vector<gcode::ToolPass> passes = planning::to_passes(r.holes, plan, o.machine);

@@ -115,6 +115,34 @@ std::string report_json(const aco::HoleSet& holes, const PlanResult& plan, const
   for (const auto& [file, count] : ctx.sources) sources.push_back({{"file", file}, {"holes", count}});
   if (ctx.sources.empty()) sources.push_back({{"file", ctx.source}, {"holes", holes.size()}});
   j["sources"] = sources;
+  // Issue 82: every hole feature that is more than a plain hole, and what became of it.
+  if (ctx.input && !ctx.input->features.empty()) {
+    nlohmann::ordered_json features = nlohmann::ordered_json::array();
+    for (const formats::HoleFeature& f : ctx.input->features) {
+      if (f.kind == formats::FeatureKind::Plain) continue;
+      nlohmann::ordered_json one = {{"x_mm", round6(f.center.x)},
+                                    {"y_mm", round6(f.center.y)},
+                                    {"kind", formats::to_string(f.kind)},
+                                    {"diameter_mm", round6(f.diameter_mm)},
+                                    {"drill_mm", round6(f.drill_mm)},
+                                    {"outer_diameter_mm", round6(f.outer_diameter_mm)},
+                                    {"thread", f.thread},
+                                    {"layer", f.layer},
+                                    {"evidence", f.evidence},
+                                    {"line", f.line}};
+      if (f.pitch_mm > 0) one["pitch_mm"] = round6(f.pitch_mm);
+      if (f.depth_mm > 0) one["depth_mm"] = round6(f.depth_mm);
+      if (f.angle_deg > 0) one["angle_deg"] = round6(f.angle_deg);
+      if (!f.undecided_mm.empty()) {
+        nlohmann::ordered_json d = nlohmann::ordered_json::array();
+        for (double v : f.undecided_mm) d.push_back(round6(v));
+        one["not_machined_mm"] = d;
+      }
+      features.push_back(one);
+    }
+    j["features"] = features;
+    j["features_summary"] = formats::features_summary(ctx.input->features);
+  }
   // What a reader assumed because the input did not say (Excellon units and number format).
   if (ctx.input && !ctx.input->assumptions.empty()) j["input_assumptions"] = ctx.input->assumptions;
   // DXF: round closed contours drawn without a CIRCLE, read as holes or only counted.
@@ -138,6 +166,35 @@ std::string convergence_csv(const PlanResult& plan) {
     }
   }
   return out.str();
+}
+
+namespace {
+
+// A CSV field: quoted where it holds a comma, a quote or a line break.
+std::string csv_field(const std::string& s) {
+  if (s.find_first_of(",\"\n") == std::string::npos) return s;
+  std::string q = "\"";
+  for (char c : s) q += (c == '"') ? std::string("\"\"") : std::string(1, c);
+  return q + "\"";
+}
+
+}  // namespace
+
+std::string features_csv(const formats::LoadedHoles& loaded) {
+  std::string out = "x_mm,y_mm,kind,diameter_mm,outer_diameter_mm,thread,layer,evidence\n";
+  auto n6 = [](double v) { return gcode::format_number(v, 6); };
+  if (loaded.features.empty()) {  // an input that draws no features: each hole a plain one
+    for (const aco::Hole& h : loaded.holes) {
+      out += n6(h.center.x) + "," + n6(h.center.y) + ",plain," + n6(h.diameter) + ",,," + csv_field(h.layer) + ",\n";
+    }
+    return out;
+  }
+  for (const formats::HoleFeature& f : loaded.features) {
+    out += n6(f.center.x) + "," + n6(f.center.y) + "," + formats::to_string(f.kind) + "," + n6(f.diameter_mm) + "," +
+           (f.outer_diameter_mm > 0 ? n6(f.outer_diameter_mm) : std::string()) + "," + csv_field(f.thread) + "," +
+           csv_field(f.layer) + "," + csv_field(f.evidence) + "\n";
+  }
+  return out;
 }
 
 std::string holes_csv(const aco::HoleSet& holes) {

@@ -86,6 +86,10 @@ formats::InputOptions input_options(const InputSettings& a) {
   }
   if (!a.excellon_format.empty()) o.excellon_format = parse_excellon_format(a.excellon_format);
   o.dxf.round_contours = a.round_contours;
+  if (a.concentric != "features" && a.concentric != "separate") {
+    throw UserError("--concentric must be features or separate (got \"" + a.concentric + "\")");
+  }
+  o.concentric_separate = a.concentric == "separate";
   o.dxf.round_tolerance = a.round_tolerance_pct / 100.0;
   if (!a.dxf_units.empty()) {
     const std::map<std::string, double> units = {{"mm", 1.0},    {"cm", 10.0}, {"m", 1000.0},   {"inch", 25.4},

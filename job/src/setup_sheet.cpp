@@ -76,7 +76,7 @@ std::string setup_sheet_html(const aco::HoleSet& holes, const PlanResult& plan, 
     << len(ps.r_plane_mm) << ", initial plane Z" << len(ps.initial_z_mm) << " " << unit << ".</div>\n";
 
   if (ctx.input && (ctx.input->slots_drilled || ctx.input->slots_milled || !ctx.input->skipped.empty())) {
-    h << "<h2>Slots and features not drilled</h2>\n<ul>\n";
+    h << "<h2>Slots and features not made</h2>\n<ul>\n";
     if (ctx.input->slots_milled) {
       h << "<li>" << ctx.input->slots_milled << " slot(s) milled along their length by the end mill.</li>\n";
     }
@@ -85,7 +85,7 @@ std::string setup_sheet_html(const aco::HoleSet& holes, const PlanResult& plan, 
         << " overlapping holes, ends first.</li>\n";
     }
     for (const formats::Note& n : ctx.input->skipped) {
-      h << "<li><b>Not drilled</b>: " << (n.line ? "line " + std::to_string(n.line) + ": " : std::string()) << esc(n.message)
+      h << "<li><b>Not made</b>: " << (n.line ? "line " + std::to_string(n.line) + ": " : std::string()) << esc(n.message)
         << "</li>\n";
     }
     h << "</ul>\n";

@@ -331,7 +331,7 @@
       notes.push(i.file + ': ' + i.holes + ' holes from ' + i.format);
       for (const a of i.assumptions) notes.push(i.file + ': assumed ' + a);
       for (const w of i.warnings) notes.push(i.file + (w.line ? ':' + w.line : '') + ': warning: ' + w.what);
-      for (const s of i.not_drilled) notes.push(i.file + (s.line ? ':' + s.line : '') + ': not drilled: ' + s.what);
+      for (const s of i.not_drilled) notes.push(i.file + (s.line ? ':' + s.line : '') + ': not made: ' + s.what);
     }
     for (const d of view.drill_map || []) notes.push(d.toLowerCase());
     const ul = document.createElement('ul');

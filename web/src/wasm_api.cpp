@@ -121,6 +121,7 @@ json holes_of(const job::Result& r) {
     const formats::LoadedHoles& part = program ? r.inputs.holes : r.inputs.parts[k];
     json notes = json::array();
     for (const formats::Note& n : part.warnings) notes.push_back({{"line", n.line}, {"what", n.message}});
+    for (const formats::Note& n : part.feature_warnings) notes.push_back({{"line", n.line}, {"what", n.message}});
     json skipped = json::array();
     for (const formats::Note& n : part.skipped) skipped.push_back({{"line", n.line}, {"what", n.message}});
     inputs.push_back({{"file", r.inputs.sources[k].file},
@@ -130,7 +131,8 @@ json holes_of(const job::Result& r) {
                       {"not_drilled", skipped},
                       {"assumptions", part.assumptions},
                       {"slots_drilled", part.slots_drilled},
-                      {"round_contours", part.round_contours}});
+                      {"round_contours", part.round_contours},
+                      {"features", formats::features_summary(part.features)}});
   }
   const planning::Extent& e = r.placement.extent;
   return {{"holes", xyd},

@@ -68,6 +68,33 @@ struct ReadOptions {
   double units_override_mm = 0.0;
 };
 
+// An ARC placed in the world (mm): what a tapped hole's thread is drawn with
+// (ISO 6410-1: about three quarters of a circle at the thread's major
+// diameter, around the tap drill's full circle).
+struct DrawnArc {
+  aco::Point2 center;
+  double diameter = 0.0;  // mm
+  double span_deg = 0.0;  // (0, 360]
+  std::string layer;
+  std::uint32_t line = 0;
+};
+
+// Text placed in the world (mm): TEXT, MTEXT, a MULTILEADER's text, the
+// MTEXT a LEADER points from, a DIMENSION's own text; what a hole callout is
+// written with. `text` is as written (MTEXT's formatting codes kept: the
+// callout reader reads them); `anchors` are its insertion point first, then
+// where its leader or dimension points.
+struct DrawnText {
+  std::string text;
+  std::vector<aco::Point2> anchors;
+  std::string layer;
+  std::uint32_t line = 0;
+  // Its text style's font is a GD&T font (gdt.shx, AIGDT), where letters
+  // stand for symbols: n is the diameter sign, v the counterbore, w the
+  // countersink, x the depth.
+  bool gdt_font = false;
+};
+
 struct ReadResult {
   aco::HoleSet holes;                   // file order, duplicates removed, mm
   std::vector<Diagnostic> diagnostics;  // warnings and notes, in file order
@@ -79,6 +106,10 @@ struct ReadResult {
   std::string round_contour_kinds;       // "12 SPLINE, 40 LINE, 2 ARC+LWPOLYLINE"
   std::string version;                  // $ACADVER, e.g. "AC1024"; empty for R10/R12 files without it
   double unit_mm = 1.0;                 // millimetres per drawing unit that was applied
+  // What the drawing says of its holes besides the circles (issue 82): arcs
+  // (layer filter applied) and texts, in model space and in its blocks.
+  std::vector<DrawnArc> arcs;
+  std::vector<DrawnText> texts;
   bool binary = false;
 };
 

@@ -20,6 +20,7 @@
 #include "aco/geometry.h"
 #include "aco/problem.h"
 #include "dxf/reader.h"
+#include "formats/features.h"
 #include "gcode/drilling.h"
 
 namespace formats {
@@ -74,6 +75,10 @@ struct InputOptions {
   };
   std::optional<ExcellonFormat> excellon_format;
   std::string nc_param;
+  // Issue 82: a DXF's concentric circles and thread arcs read as hole
+  // features (formats/features.h); true: every circle a hole of its own, as
+  // before (--concentric separate).
+  bool concentric_separate = false;
 };
 
 struct Note {
@@ -106,6 +111,13 @@ struct LoadedHoles {
   // routed paths): never only a warning on stderr — the program's header,
   // the report and the setup sheet name each one.
   std::vector<Note> skipped;
+  // DXF (issue 82): one a hole of `holes`, in its order, what the drawing
+  // says the hole is (plain, tapped, counterbored, ...); empty for formats
+  // that draw no features, and with --concentric separate.
+  std::vector<HoleFeature> features;
+  // What the features ask for that plan does not do (taps, counterbores,
+  // undecided circles): a line each on stderr, not folded into `warnings`.
+  std::vector<Note> feature_warnings;
   // Gerber X2: the file's %TF.FileFunction ("Plated,1,4,PTH,Drill"): plating and layer span.
   std::string drill_function;
   // A drilling program (another CAM's G-code): its tool runs and how each hole

@@ -39,4 +39,9 @@ std::string convergence_csv(const planning::PlanResult& plan);
 // header x_mm,y_mm,diameter_mm,layer; 6 decimals; a layer with a comma or quote quoted.
 std::string holes_csv(const aco::HoleSet& holes);
 
+// `acodrill holes --features` (issue 82): one row a hole feature, header
+// x_mm,y_mm,kind,diameter_mm,outer_diameter_mm,thread,layer,evidence; an
+// input without features gives each hole as a plain one.
+std::string features_csv(const formats::LoadedHoles& loaded);
+
 }  // namespace job

@@ -52,6 +52,7 @@ struct InputSettings {
   bool round_contours = false;
   double round_tolerance_pct = 2.5;
   std::string dxf_units;  // mm | cm | m | inch | feet; empty: the DXF's header
+  std::string concentric = "features";  // features | separate (issue 82)
 };
 
 // The tools on the bench and the side of the board (--drills, --end-mill, --side, ...).
