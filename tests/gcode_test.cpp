@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "gcode/interpreter.h"
+#include "gcode/motion_time.h"
 #include "gcode/program.h"
 
 namespace {
@@ -174,4 +175,27 @@ TEST(gcode_test, comments_write_names_in_any_script_one_character_a_character) {
   for (const std::string& s : {std::string("плата 測試 board v2.drl"), std::string("\xF0\x9F\x98\x80\x80\x80 é")}) {
     for (char c : gcode::comment_text(s)) EXPECT_LT(static_cast<unsigned char>(c), 128) << s;
   }
+}
+
+// A canned cycle's P is milliseconds without a decimal point on HAAS and
+// Fanuc and seconds on LinuxCNC; a G84 tap waits for its spindle to reverse
+// and feeds out.
+TEST(gcode_test, canned_cycle_dwells_and_taps_are_timed_in_the_controls_units) {
+  const auto dwell_of = [](const std::string& p, bool integer_ms) {
+    gcode::Kinematics k;
+    k.cycle_p_integer_ms = integer_ms;
+    return gcode::time_program("G21 G90\nG0 X0 Y0 Z5\nG82 X10 Y0 Z-1 R1 " + p + " F100\nG80\n", k).dwell_s;
+  };
+  EXPECT_DOUBLE_EQ(dwell_of("P500", true), 0.5);
+  EXPECT_DOUBLE_EQ(dwell_of("P0.5", true), 0.5);
+  EXPECT_DOUBLE_EQ(dwell_of("P2", false), 2.0);
+  EXPECT_DOUBLE_EQ(dwell_of("P0.5", false), 0.5);
+  gcode::Kinematics k;
+  const auto drill = gcode::time_program("G21 G90\nG0 X0 Y0 Z5\nG81 X10 Y0 Z-6 R1 F120\nG80\n", k);
+  const auto tap = gcode::time_program("G21 G90\nG0 X0 Y0 Z5\nG84 X10 Y0 Z-6 R1 F120\nG80\n", k);
+  // Down 7 mm at 120 mm/min either way; the tap also reverses and feeds the
+  // 7 mm back up (3.5 s), where the drill rapids out 11 mm, the tap 4 mm.
+  const double more = tap.drilling_s - drill.drilling_s;
+  EXPECT_GT(more, 3.0);
+  EXPECT_LT(more, k.tap_reverse_s + 3.5);
 }

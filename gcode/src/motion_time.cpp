@@ -181,6 +181,7 @@ class Planner {
 struct Word {
   char letter;
   double value;
+  bool integer = false;  // written without a decimal point (a canned cycle's P: milliseconds)
 };
 
 // The words of a line, comments left out; a word GRBL or LinuxCNC would refuse is ProgramError.
@@ -212,7 +213,7 @@ std::vector<Word> words_of(std::string_view line, std::uint32_t number) {
     if (num.empty() || r.ec != std::errc() || r.ptr != num.data() + num.size()) {
       throw ProgramError(number, std::string("a number after ") + c);
     }
-    out.push_back({c, v});
+    out.push_back({c, v, num.find('.') == std::string::npos});
     // M0, M1 and M117 (Marlin) take the rest of the line as their message.
     if (c == 'M' && (v == 0 || v == 1 || v == 117)) break;
   }
@@ -261,13 +262,14 @@ ProgramTime time_program(std::string_view program, const Kinematics& k) {
     const double scale = inch ? 25.4 : 1.0;
     bool machine_coords = false, home = false, dwell = false, set_coords = false, new_cycle = false;
     std::optional<double> x, y, z, i_off, j_off, r, q, p, f;
+    bool p_integer = false;
     int new_motion = motion;
     for (const Word& w : words) {
       switch (w.letter) {
         case 'G':
           if (is_g(w, 0) || is_g(w, 1) || is_g(w, 2) || is_g(w, 3)) new_motion = static_cast<int>(w.value);
           else if (is_g(w, 38.2) || is_g(w, 38.3) || is_g(w, 38.4) || is_g(w, 38.5)) new_motion = 38;
-          else if (is_g(w, 73) || is_g(w, 81) || is_g(w, 82) || is_g(w, 83)) {
+          else if (is_g(w, 73) || is_g(w, 81) || is_g(w, 82) || is_g(w, 83) || is_g(w, 84) || is_g(w, 74) || is_g(w, 85)) {
             new_motion = static_cast<int>(w.value);
             new_cycle = true;
           } else if (is_g(w, 80)) new_motion = -1;
@@ -312,7 +314,7 @@ ProgramTime time_program(std::string_view program, const Kinematics& k) {
         case 'J': j_off = w.value; break;
         case 'R': r = w.value; break;
         case 'Q': q = w.value; break;
-        case 'P': p = w.value; break;
+        case 'P': p = w.value, p_integer = w.integer; break;
         case 'F': f = w.value; break;
         default: break;  // N, S, H, O, L, D: no motion
       }
@@ -391,11 +393,11 @@ ProgramTime time_program(std::string_view program, const Kinematics& k) {
                  from[2] + (target[2] - from[2]) * static_cast<double>(s) / static_cast<double>(segments)});
       }
       feed_to(target);
-    } else if (motion == 73 || motion == 81 || motion == 82 || motion == 83) {
+    } else if (motion == 73 || motion == 81 || motion == 82 || motion == 83 || motion == 84 || motion == 74 || motion == 85) {
       if (r) cycle_r = absolute ? *r * scale : pos[2] + *r * scale;
       if (z) cycle_z = target[2];
       if (q) cycle_q = *q * scale;
-      if (p) cycle_p = *p;
+      if (p) cycle_p = p_integer && k.cycle_p_integer_ms ? *p / 1000.0 : *p;
       if (!cycle_active) initial_z = pos[2];
       cycle_active = true;
       // Up to R first if below it, then over the hole at that height, down to R.
@@ -421,6 +423,12 @@ ProgramTime time_program(std::string_view program, const Kinematics& k) {
         feed_to({pos[0], pos[1], bottom});
       }
       if (motion == 82 && cycle_p > 0) planner.dwell(cycle_p, false);
+      if (motion == 84 || motion == 74 || motion == 85) {
+        // Tapping: the spindle reverses at the bottom and the tap feeds out at
+        // the same pitch; reaming: fed out to R. Then as any cycle.
+        if (motion != 85) planner.dwell(k.tap_reverse_s, false);
+        feed_to({pos[0], pos[1], cycle_r});
+      }
       rapid({pos[0], pos[1], r_retract ? cycle_r : std::max(cycle_r, initial_z)});
     }
     if (end == program.size()) break;

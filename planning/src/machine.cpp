@@ -191,6 +191,7 @@ gcode::Kinematics kinematics_of(const Machine& m, gcode::Dialect dialect) {
   k.arc_tolerance_mm = m.arc_tolerance_mm;
   k.linear_rapids = m.linear_rapids;
   k.dwell_p_in_ms = dialect == gcode::Dialect::Marlin;
+  k.cycle_p_integer_ms = dialect == gcode::Dialect::Haas || dialect == gcode::Dialect::Fanuc;
   return k;
 }
 

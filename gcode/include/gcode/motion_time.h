@@ -37,7 +37,14 @@ struct Kinematics {
   // A G83 peck's rapid back down stops this far above the depth reached,
   // a G73 peck retracts this far (LinuxCNC's 0.010 in; HAAS's setting 22).
   double peck_clearance_mm = 0.254;
+  // G84/G74 (issue 82): the spindle stops and turns the other way at the
+  // bottom of each tapped hole; a VF-2-class spindle's reversal, a tenth of a
+  // second for a small tap, is taken at 0.3 s (the slow end).
+  double tap_reverse_s = 0.3;
   bool dwell_p_in_ms = false;  // G4 P in milliseconds (Marlin), else seconds
+  // A canned cycle's P without a decimal point is milliseconds (HAAS and
+  // Fanuc: G82 P500 is half a second); LinuxCNC's is always seconds.
+  bool cycle_p_integer_ms = false;
 };
 
 struct ProgramTime {
