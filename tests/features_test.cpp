@@ -8,6 +8,7 @@
 #include <cmath>
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <regex>
 #include <sstream>
 
 #include "formats/features.h"
@@ -133,7 +134,7 @@ TEST_P(FeatureCase, the_report_lists_the_features_with_their_callouts_depths) {
   const std::vector<Row> want = expected_rows(testutil::data("dxf-features/" + GetParam() + ".features.csv"));
   testutil::TempDir t;
   auto r = acodrill_run("plan " + shell_quote(drawing(GetParam())) + " -o " + t / "p.nc" + " --report " + t / "r.json" +
-                        " --iterations 5 -q");
+                        " --iterations 5 -q --thickness 20");
   ASSERT_EQ(r.code, 0) << r.err;
   const nlohmann::json report = nlohmann::json::parse(slurp(t / "r.json"));
   std::size_t listed = 0;
@@ -155,40 +156,122 @@ TEST_P(FeatureCase, the_report_lists_the_features_with_their_callouts_depths) {
 INSTANTIATE_TEST_SUITE_P(ezdxf_drawings, FeatureCase, ::testing::ValuesIn(cases()),
                          [](const ::testing::TestParamInfo<std::string>& i) { return i.param; });
 
-// The issue's build plate: the program drills 3.4 at the four counterbored
-// places and 2.5 (M3's tap drill) at the two tapped ones, nothing at 6.5 or
-// 2.459, as LinuxCNC's interpreter reads it; the header and the summary say
-// what it does not make. --concentric separate drills every circle through.
-TEST(features_test, the_build_plate_drills_each_hole_once_at_its_drill_and_never_the_counterbore) {
-  testutil::TempDir t;
-  for (const std::string name : {"build_plate", "build_plate_no_callout", "m6_tapped_and_counterbored"}) {
-    const std::vector<Row> want = expected_rows(testutil::data("dxf-features/" + name + ".features.csv"));
-    auto r = acodrill_run("plan " + shell_quote(drawing(name)) + " -o " + t / "p.nc" +
-                          " --dialect linuxcnc --origin drawing --iterations 20");
-    ASSERT_EQ(r.code, 0) << r.err;
-    const std::string program = slurp(t / "p.nc");
-    const oracles::Canon canon = oracles::run_rs274(t / "p.nc");
-    const std::map<int, double> tools = oracles::tool_diameters(program);
-    ASSERT_EQ(canon.made.size(), want.size()) << name;
-    for (const Row& w : want) {
-      const auto m = std::find_if(canon.made.begin(), canon.made.end(), [&](const oracles::Made& k) {
-        return std::fabs(k.x - w.x) <= 0.0006 && std::fabs(k.y - w.y) <= 0.0006;
-      });
-      ASSERT_NE(m, canon.made.end()) << name << ": nothing made at " << w.x << "," << w.y;
-      EXPECT_NEAR(tools.at(m->tool), w.drill, 1e-3) << name << " at " << w.x << "," << w.y;
-      EXPECT_EQ(m->path_radius, 0.0) << "drilled, not milled";
+namespace {
+
+// What the program makes at each feature, by the issue's rules, from the
+// oracle's rows: the drill, then a tap (the thread's major, through the part
+// and 3 pitches, never below the drill's tip), a counterbore (its depth, the callout's or ISO 4762's) or a
+// countersink (a pointed tool to the drawn diameter, 90 degrees unless the
+// callout says); an undecided circle nothing.
+struct Make {
+  double x, y, tool_mm, bottom;
+  std::string kind;
+};
+
+double socket_head_depth(double counterbore) {
+  const double rows[][2] = {{6.5, 3.4}, {8, 4.4}, {10, 5.4}, {11, 6.4}, {15, 8.6}, {18, 10.6}, {20, 12.6}, {26, 16.6}, {33, 20.6}};
+  for (const auto& r : rows) {
+    if (std::fabs(r[0] - counterbore) < 0.01) return r[1];
+  }
+  return 0;
+}
+
+std::vector<Make> makes_of(const std::vector<Row>& rows, double thickness, bool taps) {
+  std::vector<Make> out;
+  for (const Row& w : rows) {
+    out.push_back({w.x, w.y, w.drill, std::nan(""), "drill"});
+    if (w.kind == "tapped" && taps) {
+      const double pitch = w.thread == "M3" ? 0.5 : w.thread == "M6" ? 1.0 : std::nan("");
+      out.push_back({w.x, w.y, w.outer, -std::min(thickness + 3 * pitch, thickness + 0.3 * w.drill + 0.5), "tap"});
+    } else if (w.kind == "counterbore") {
+      out.push_back({w.x, w.y, w.outer, -(w.depth > 0 ? w.depth : socket_head_depth(w.outer)), "counterbore"});
+    } else if (w.kind == "countersink") {
+      const double angle = w.angle > 0 ? w.angle : 90.0;
+      out.push_back({w.x, w.y, w.outer, -0.5 * w.outer / std::tan(0.5 * angle * M_PI / 180.0), "countersink"});
     }
-    // What the program does not make is said where the operator reads it.
-    std::size_t said = 0;
-    for (std::size_t at = program.find("(NOT MADE: "); at != std::string::npos; at = program.find("(NOT MADE: ", at + 1)) ++said;
-    std::size_t not_plain = 0;
-    for (const Row& w : want) not_plain += w.kind != "plain";
-    EXPECT_EQ(said, not_plain) << program;
-    EXPECT_EQ(acodrill_run("verify " + t / "p.nc" + " --holes " + shell_quote(drawing(name)) + " -q").code, 0) << name;
+  }
+  return out;
+}
+
+// The S and F of tool `tool`'s first cycle line of the program.
+std::pair<double, double> speed_and_feed(const std::string& program, int tool) {
+  std::smatch m;
+  const std::string from = program.substr(program.find("T" + std::to_string(tool) + " M06"));
+  double s = 0, f = 0;
+  if (std::regex_search(from, m, std::regex(R"(S(\d+) M0[34])"))) s = std::stod(m[1]);
+  if (std::regex_search(from, m, std::regex(R"(G(?:84|74|81|82|83|85)[^\n]* F([0-9.]+))"))) f = std::stod(m[1]);
+  return {s, f};
+}
+
+}  // namespace
+
+// The issue's drawings as HAAS, Fanuc and LinuxCNC programs, read back by
+// LinuxCNC's rs274: every hole drilled once at its drill, then its tap,
+// counterbore or countersink at its place, deeper than nothing else, after
+// the drill, each with a tool of its own diameter; the tap's feed the pitch
+// times its speed (Fanuc tapping rigidly, M29 first); the larger circles
+// nothing says a counterbore or countersink of never machined, and named
+// under NOT MADE. --concentric separate drills every circle through.
+TEST(features_test, each_feature_is_drilled_then_tapped_counterbored_or_countersunk_in_order) {
+  testutil::TempDir t;
+  struct Case {
+    std::string name;
+    double thickness;
+  };
+  for (const Case& c : {Case{"build_plate", 6.35}, Case{"build_plate_no_callout", 6.35}, Case{"m6_tapped_and_counterbored", 6.35},
+                        Case{"by_layer", 12.0}, Case{"callouts", 20.0}}) {
+    for (const std::string dialect : {"haas", "fanuc", "linuxcnc"}) {
+      SCOPED_TRACE(c.name + ", " + dialect);
+      const std::vector<Row> want = expected_rows(testutil::data("dxf-features/" + c.name + ".features.csv"));
+      auto r = acodrill_run("plan " + shell_quote(drawing(c.name)) + " -o " + t / "p.nc" + " --dialect " + dialect +
+                            " --origin drawing --iterations 20 --thickness " + std::to_string(c.thickness));
+      ASSERT_EQ(r.code, 0) << r.err;
+      const std::string program = slurp(t / "p.nc");
+      const oracles::Canon canon = oracles::run_rs274(t / "p.nc");
+      const std::map<int, double> tools = oracles::tool_diameters(program);
+      const std::vector<Make> makes = makes_of(want, c.thickness, true);
+      ASSERT_EQ(canon.made.size(), makes.size());
+      std::vector<char> used(canon.made.size(), 0);
+      std::map<std::pair<long long, long long>, std::size_t> drilled_at;  // place → the drill's turn
+      for (const Make& k : makes) {
+        std::size_t found = canon.made.size();
+        for (std::size_t i = 0; i < canon.made.size() && found == canon.made.size(); ++i) {
+          const oracles::Made& m = canon.made[i];
+          if (!used[i] && std::fabs(m.x - k.x) <= 0.0006 && std::fabs(m.y - k.y) <= 0.0006 && tools.count(m.tool) &&
+              std::fabs(tools.at(m.tool) - k.tool_mm) <= 0.001) {
+            found = i;
+          }
+        }
+        ASSERT_NE(found, canon.made.size()) << k.kind << " D" << k.tool_mm << " at " << k.x << "," << k.y;
+        used[found] = 1;
+        const auto place = std::make_pair(std::llround(k.x * 1000), std::llround(k.y * 1000));
+        if (k.kind == "drill") {
+          drilled_at[place] = found;
+          EXPECT_LT(canon.made[found].bottom, -c.thickness) << "drilled through at " << k.x << "," << k.y;
+          continue;
+        }
+        EXPECT_NEAR(canon.made[found].bottom, k.bottom, 0.001) << k.kind << " at " << k.x << "," << k.y;
+        ASSERT_TRUE(drilled_at.count(place));
+        EXPECT_GT(found, drilled_at[place]) << k.kind << " before the drill at " << k.x << "," << k.y;
+        const std::pair<double, double> sf = speed_and_feed(program, canon.made[found].tool);
+        if (k.kind == "tap") {
+          EXPECT_NE(program.find("G84"), std::string::npos);
+          EXPECT_NEAR(sf.second, sf.first * (k.tool_mm > 5 ? 1.0 : 0.5), 0.05) << "F = pitch x S";
+          EXPECT_EQ(program.find("M29") != std::string::npos, dialect == "fanuc") << "rigid tapping: Fanuc's M29";
+        }
+      }
+      // The larger circles nothing decided are named, never made.
+      std::size_t said = 0;
+      for (std::size_t at = program.find("(NOT MADE: "); at != std::string::npos; at = program.find("(NOT MADE: ", at + 1)) ++said;
+      std::size_t undecided = 0;
+      for (const Row& w : want) undecided += w.kind == "undecided";
+      EXPECT_EQ(said, undecided) << program;
+      auto v = acodrill_run("verify " + t / "p.nc" + " --holes " + shell_quote(drawing(c.name)) + " -q");
+      EXPECT_EQ(v.code, 0) << v.out;
+    }
   }
   auto with_callout = acodrill_run("plan " + shell_quote(drawing("build_plate")) + " -o " + t / "p.nc" + " --iterations 5");
   EXPECT_THAT(with_callout.err, ::testing::HasSubstr("hole features: 2 tapped (M3), 4 counterbored"));
-  EXPECT_THAT(with_callout.err, ::testing::HasSubstr("warning: 2 tapped hole(s) (M3 x2) drilled at the tap drill (M3 2.5 mm)"));
   auto without = acodrill_run("plan " + shell_quote(drawing("build_plate_no_callout")) + " -o " + t / "p.nc" + " --iterations 5");
   EXPECT_EQ(without.code, 0);
   EXPECT_THAT(without.err, ::testing::HasSubstr("warning: 4 circle(s) around a smaller hole (D6.5 x4) not machined"));
@@ -197,6 +280,40 @@ TEST(features_test, the_build_plate_drills_each_hole_once_at_its_drill_and_never
   auto bad = acodrill_run("holes " + shell_quote(drawing("build_plate")) + " --concentric sometimes");
   EXPECT_EQ(bad.code, 2);
   EXPECT_THAT(bad.err, ::testing::HasSubstr("--concentric must be features or separate"));
+}
+
+// GRBL and Marlin cannot tap: the holes are drilled at the tap drill and the
+// program ends with a pause that lists them; GRBL's own parser takes every
+// line; countersinks are plunged; counterbores are named, not made.
+TEST(features_test, grbl_and_marlin_drill_the_tap_drill_and_end_with_the_taps_to_make_by_hand) {
+  testutil::TempDir t;
+  for (const std::string dialect : {"grbl", "marlin"}) {
+    auto r = acodrill_run("plan " + shell_quote(drawing("build_plate")) + " -o " + t / "p.nc" + " --dialect " + dialect +
+                          " --iterations 10");
+    ASSERT_EQ(r.code, 0) << r.err;
+    const std::string program = slurp(t / "p.nc");
+    EXPECT_EQ(program.find("G84"), std::string::npos);
+    EXPECT_THAT(program, ::testing::HasSubstr("TAP M3 AT X"));
+    EXPECT_THAT(program, ::testing::HasSubstr("TAP BY HAND"));
+    EXPECT_THAT(r.err, ::testing::HasSubstr("cannot tap: the program ends with a pause that lists them"));
+    EXPECT_THAT(r.err, ::testing::HasSubstr("counterbore(s) (D6.5 x4) not made: GRBL and Marlin"));
+    if (dialect == "grbl") {
+      EXPECT_EQ(oracles::grbl_refusal(program), "");
+    }
+    auto v = acodrill_run("verify " + t / "p.nc" + " --holes " + shell_quote(drawing("build_plate")) + " -q");
+    EXPECT_EQ(v.code, 0) << v.out;
+  }
+}
+
+// What contradicts is one line naming the feature, exit 2, nothing written:
+// a counterbore deeper than the part.
+TEST(features_test, a_counterbore_as_deep_as_the_part_is_refused_in_one_line) {
+  testutil::TempDir t;
+  auto r = acodrill_run("plan " + shell_quote(drawing("callouts")) + " -o " + t / "p.nc" + " --thickness 6.35");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_EQ(testutil::count_lines(r.err), 1) << r.err;
+  EXPECT_THAT(r.err, ::testing::HasSubstr("counterbore D11 at X100.000 Y0.000 is 6.5 mm deep, as deep as the part or deeper"));
+  EXPECT_FALSE(std::filesystem::exists(t / "p.nc"));
 }
 
 TEST(features_test, arcs_that_are_no_thread_leave_the_hole_as_drawn_and_say_so) {

@@ -10,7 +10,9 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <cctype>
 #include <map>
+#include <regex>
 #include <sstream>
 
 #include "aco/solve.h"
@@ -20,6 +22,7 @@
 #include "job/report.h"
 #include "job/verify.h"
 #include "planning/machine.h"
+#include "planning/operations.h"
 
 namespace cli {
 
@@ -195,6 +198,22 @@ int cmd_verify(const VerifyArgs& a, const InputArgs& in, bool quiet) {
   std::string holes_path;
   for (const std::string& p : a.holes) holes_path += (holes_path.empty() ? "" : " + ") + p;
   app::LoadedHoles expected = app::load_job(a.holes, job::input_options(read_input_settings(in))).holes;
+  {
+    // Issue 82: the operations plan makes of the hole features: taps where the
+    // program has canned cycles (GRBL and Marlin leave them to the operator).
+    // Depths are not checked here, so no thickness can make one contradict.
+    static const std::regex canned(R"((^|[^0-9.])G(8[1-5]|7[34])([^0-9.]|$))");
+    std::string code;
+    for (std::size_t at = 0, depth = 0; at < text.size(); ++at) {
+      if (text[at] == '(') ++depth;
+      else if (text[at] == ')' && depth > 0) --depth;
+      else if (depth == 0) code += static_cast<char>(std::toupper(static_cast<unsigned char>(text[at])));
+    }
+    const bool cycles = std::regex_search(code, canned);
+    std::vector<std::uint32_t> no_sources;
+    planning::add_operations(expected.holes, no_sources, expected.features, {planning::Material::Steel, 1e9, cycles, cycles},
+                             holes_path);
+  }
   if (!a.panel.empty() || !a.pitch.empty()) {
     std::string grid;
     std::optional<job::NamedText> file;

@@ -31,6 +31,8 @@ void print_summary(const PlanArgs& a, const job::Result& r) {
     if (r.inputs.parts.size() > 1 && r.inputs.holes.duplicates_removed) {
       std::fprintf(stderr, "acodrill: %zu hole(s) in more than one input drilled once\n", r.inputs.holes.duplicates_removed);
     }
+    // What the job makes of the hole features, and what it cannot (issue 82).
+    for (const formats::Note& n : r.inputs.holes.feature_warnings) std::fprintf(stderr, "acodrill: warning: %s\n", n.message.c_str());
   }
   const auto& in = plan.input_order;
   const auto& nn = plan.nearest_neighbor;

@@ -9,7 +9,6 @@
 #include <numeric>
 #include <optional>
 #include <set>
-#include <type_traits>
 #include <unordered_map>
 
 #include "aco/utf8.h"
@@ -21,16 +20,6 @@ namespace formats {
 namespace {
 
 std::string mm(double v) { return gcode::format_number(v, 3); }
-
-// A number as a person reads it: 6.5 not 6.500.
-std::string short_mm(double v) {
-  std::string s = gcode::format_number(v, 3);
-  if (s.find('.') != std::string::npos) {
-    s.erase(s.find_last_not_of('0') + 1);
-    if (s.back() == '.') s.pop_back();
-  }
-  return s;
-}
 
 // Circles by X, to find those whose centre lies within kConcentricMm of a point.
 class CentresByX {
@@ -359,11 +348,11 @@ RecognizedFeatures recognize_features(const aco::HoleSet& circles, const std::ve
     if (!(a.diameter > hole.diameter + 1e-6) || group.thread != nullptr) continue;
     if (const Thread* t = match_thread(a.diameter, hole.diameter, inch)) {
       group.thread = t;
-      group.thread_evidence = "arc " + short_mm(a.span_deg) + " deg of D" + short_mm(a.diameter) + ", line " + std::to_string(a.line);
+      group.thread_evidence = "arc " + gcode::format_short(a.span_deg) + " deg of D" + gcode::format_short(a.diameter) + ", line " + std::to_string(a.line);
     } else {
       if (no_thread++ == 0) {
         first_no_thread = a.line;
-        no_thread_example = "D" + short_mm(a.diameter) + " around D" + short_mm(hole.diameter);
+        no_thread_example = "D" + gcode::format_short(a.diameter) + " around D" + gcode::format_short(hole.diameter);
       }
     }
   }
@@ -433,9 +422,7 @@ RecognizedFeatures recognize_features(const aco::HoleSet& circles, const std::ve
   }
 
   // 5. One hole and one feature a group, in file order.
-  std::map<std::string, std::size_t> tapped;
-  std::map<double, std::size_t> counterbores, countersinks, undecided;  // by diameter
-  std::map<std::string, double> tap_drills;
+  std::map<double, std::size_t> undecided;  // by diameter
   r.holes.reserve(circles.size());
   r.features.reserve(circles.size());
   const Group single{};
@@ -451,6 +438,7 @@ RecognizedFeatures recognize_features(const aco::HoleSet& circles, const std::ve
     f.drill_mm = g.thread ? g.thread->tap_drill_mm : hole.diameter;
     f.layer = hole.layer;
     f.line = hole.source_line;
+    f.inch = inch;
     const Ring* decided_ring = nullptr;
     for (const Ring& ring : g.rings) {
       if (ring.kind == FeatureKind::Undecided) f.undecided_mm.push_back(circles[ring.circle].diameter);
@@ -463,10 +451,6 @@ RecognizedFeatures recognize_features(const aco::HoleSet& circles, const std::ve
       f.pitch_mm = g.thread->pitch_mm;
       f.outer_diameter_mm = g.thread->major_mm;
       f.evidence = g.thread_evidence;
-      ++tapped[f.thread];
-      tap_drills[f.thread] = g.thread->tap_drill_mm;
-      r.not_made.push_back({f.line, "tap " + f.thread + " pitch " + short_mm(f.pitch_mm) + " mm" + at + ", drilled " +
-                                        short_mm(f.drill_mm) + " mm"});
     }
     if (decided_ring != nullptr) {
       const double d = circles[decided_ring->circle].diameter;
@@ -478,19 +462,15 @@ RecognizedFeatures recognize_features(const aco::HoleSet& circles, const std::ve
         f.angle_deg = decided_ring->angle_deg;
         f.evidence = decided_ring->evidence;
       } else {
-        f.evidence += "; " + std::string(bore ? "counterbore" : "countersink") + " D" + short_mm(d) + " by " + decided_ring->evidence;
+        f.evidence += "; " + std::string(bore ? "counterbore" : "countersink") + " D" + gcode::format_short(d) + " by " + decided_ring->evidence;
       }
-      ++(bore ? counterbores : countersinks)[d];
-      std::string what = (bore ? "counterbore D" : "countersink D") + short_mm(d);
-      if (decided_ring->depth_mm > 0) what += " depth " + short_mm(decided_ring->depth_mm);
-      r.not_made.push_back({f.line, what + at});
     }
     for (const Ring& ring : g.rings) {
       if (ring.kind != FeatureKind::Undecided) continue;
       const double d = circles[ring.circle].diameter;
       ++undecided[d];
       r.not_made.push_back({circles[ring.circle].source_line,
-                            "circle D" + short_mm(d) + " around the hole D" + short_mm(hole.diameter) + at +
+                            "circle D" + gcode::format_short(d) + " around the hole D" + gcode::format_short(hole.diameter) + at +
                                 ", counterbore or countersink undecided"});
     }
     if (f.kind == FeatureKind::Plain && !f.undecided_mm.empty()) {
@@ -504,36 +484,11 @@ RecognizedFeatures recognize_features(const aco::HoleSet& circles, const std::ve
     r.features.push_back(std::move(f));
   }
 
-  auto listing = [](const auto& counts) {
-    std::string s;
-    for (const auto& [key, n] : counts) {
-      if constexpr (std::is_same_v<std::decay_t<decltype(key)>, double>) s += (s.empty() ? "D" : ", D") + short_mm(key);
-      else s += (s.empty() ? "" : ", ") + key;
-      s += " x" + std::to_string(n);
-    }
-    return s;
-  };
-  auto total = [](const auto& counts) {
-    std::size_t n = 0;
-    for (const auto& kv : counts) n += kv.second;
-    return std::to_string(n);
-  };
-  if (!tapped.empty()) {
-    std::string drills;
-    for (const auto& [name, d] : tap_drills) drills += (drills.empty() ? "" : ", ") + name + " " + short_mm(d) + " mm";
-    r.warnings.push_back({0, total(tapped) + " tapped hole(s) (" + listing(tapped) + ") drilled at the tap drill (" + drills +
-                                 ") and not tapped: acodrill does not tap yet; tap them by hand"});
-  }
-  if (!counterbores.empty()) {
-    r.warnings.push_back({0, total(counterbores) + " counterbore(s) (" + listing(counterbores) +
-                                 ") not made: acodrill does not counterbore yet; the holes are drilled, the counterbores are not"});
-  }
-  if (!countersinks.empty()) {
-    r.warnings.push_back({0, total(countersinks) + " countersink(s) (" + listing(countersinks) +
-                                 ") not made: acodrill does not countersink yet; the holes are drilled, the countersinks are not"});
-  }
   if (!undecided.empty()) {
-    r.warnings.push_back({0, total(undecided) + " circle(s) around a smaller hole (" + listing(undecided) +
+    std::string listing;
+    std::size_t total = 0;
+    for (const auto& [d, n] : undecided) listing += (listing.empty() ? "D" : ", D") + gcode::format_short(d) + " x" + std::to_string(n), total += n;
+    r.warnings.push_back({0, std::to_string(total) + " circle(s) around a smaller hole (" + listing +
                                  ") not machined: a counterbore or a countersink? a layer named CBORE or CSK, or a hole "
                                  "callout, says which; --concentric separate drills every circle through"});
   }

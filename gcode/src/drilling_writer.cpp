@@ -219,7 +219,7 @@ void write_hobby(std::ostream& out, const DrillingProgram& p, const DrillingWrit
     w.comment((run.tool > 0 ? "T" + std::to_string(run.tool) + ", " : std::string("NO TOOL NUMBER, ")) +
               std::to_string(run.holes.size()) + " HOLES" + (run.message.empty() ? "" : ": " + run.message));
     if (!tool_in || *tool_in != run.tool || run.pause) {
-      w.pause_for_tool(run.tool, run.diameter_mm ? w.size(*run.diameter_mm) + " DRILL" : std::string(), run.diameter_mm, false,
+      w.pause_for_tool(run.tool, run.diameter_mm ? w.size(*run.diameter_mm) + " DRILL" : std::string(), run.diameter_mm, "DRILL",
                        false, clear_z);
       tool_in = run.tool;
     }

@@ -7,6 +7,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <stdexcept>
 
 #include "aco/charconv.h"
@@ -211,11 +212,16 @@ std::string z_home_block(Dialect d) {
 
 std::string cycle_description(const Tool& t, Dialect d) {
   if (t.end_mill) return has_canned_cycles(d) ? "G02 helix" : "G2 helix";
-  if (has_canned_cycles(d)) return to_string(t.cycle);
+  if (has_canned_cycles(d)) {
+    if (is_tapping(t.cycle) && d == Dialect::Fanuc) return std::string("M29 ") + to_string(t.cycle) + " (rigid)";
+    return to_string(t.cycle);
+  }
   switch (t.cycle) {
     case Cycle::G82: return "G1 down, G4 dwell, G0 out (as G82)";
     case Cycle::G83: return "G1 pecks, G0 out after each (as G83)";
     case Cycle::G73: return "G1 pecks, G0 back-off (as G73)";
+    case Cycle::G85: return "G1 down, G1 out (as G85)";
+    case Cycle::G84: case Cycle::G74: return "by hand (no tapping here)";
     case Cycle::G81: break;
   }
   return "G1 down, G0 out (as G81)";
@@ -223,7 +229,16 @@ std::string cycle_description(const Tool& t, Dialect d) {
 
 std::string tool_name(const Tool& t) {
   if (!t.name.empty()) return t.name;
-  return format_number(t.diameter_mm, 3) + (t.end_mill ? " MM END MILL" : " MM DRILL");
+  const std::string d = format_number(t.diameter_mm, 3);
+  switch (t.operation) {
+    case Operation::Tap: return comment_text(t.thread.empty() ? d + " MM" : t.thread) + " TAP" + (t.cycle == Cycle::G74 ? " LH" : "");
+    case Operation::Countersink: return std::to_string(std::lround(t.angle_deg)) + " DEG COUNTERSINK TO D" + d;
+    case Operation::Counterbore: return d + " MM COUNTERBORE";
+    case Operation::Spot: return std::to_string(std::lround(t.angle_deg)) + " DEG SPOT DRILL";
+    case Operation::Ream: return d + " MM REAMER";
+    case Operation::Drill: break;
+  }
+  return d + (t.end_mill ? " MM END MILL" : " MM DRILL");
 }
 
 const char* to_string(Dialect d) {
@@ -259,17 +274,42 @@ const char* to_string(Cycle c) {
     case Cycle::G82: return "G82";
     case Cycle::G83: return "G83";
     case Cycle::G73: return "G73";
+    case Cycle::G84: return "G84";
+    case Cycle::G74: return "G74";
+    case Cycle::G85: return "G85";
   }
   return "?";
 }
 
 std::optional<Cycle> cycle_from_string(const std::string& name) {
-  for (Cycle c : {Cycle::G81, Cycle::G82, Cycle::G83, Cycle::G73}) {
+  for (Cycle c : {Cycle::G81, Cycle::G82, Cycle::G83, Cycle::G73, Cycle::G84, Cycle::G74, Cycle::G85}) {
     std::string n = to_string(c);
     if (name == n || name == "g" + n.substr(1) || name == n.substr(1)) return c;
   }
   return std::nullopt;
 }
+
+const char* to_string(Operation o) {
+  switch (o) {
+    case Operation::Spot: return "spot";
+    case Operation::Drill: return "drill";
+    case Operation::Ream: return "ream";
+    case Operation::Countersink: return "countersink";
+    case Operation::Counterbore: return "counterbore";
+    case Operation::Tap: return "tap";
+  }
+  return "?";
+}
+
+std::optional<Operation> operation_from_string(const std::string& name) {
+  for (Operation o : {Operation::Spot, Operation::Drill, Operation::Ream, Operation::Countersink, Operation::Counterbore,
+                      Operation::Tap}) {
+    if (name == to_string(o)) return o;
+  }
+  return std::nullopt;
+}
+
+bool is_tapping(Cycle c) { return c == Cycle::G84 || c == Cycle::G74; }
 
 std::string format_number(double value, int decimals) {
   char buf[64];
@@ -279,6 +319,13 @@ std::string format_number(double value, int decimals) {
   if (decimals == 0) s += '.';
   // "-0.000" is a rounding artefact; a machinist should never read it.
   if (s[0] == '-' && s.find_first_not_of("-0.") == std::string::npos) s.erase(0, 1);
+  return s;
+}
+
+std::string format_short(double value, int decimals) {
+  std::string s = format_number(value, decimals);
+  s.erase(s.find_last_not_of('0') + 1);
+  if (s.back() == '.') s.pop_back();
   return s;
 }
 
@@ -294,7 +341,7 @@ namespace {
 // The tool's canned cycle as the words a canned-cycle control would be given.
 HoleCycle cycle_of(const Tool& t, const ProgramSettings& s) {
   HoleCycle c;
-  c.code = t.cycle == Cycle::G82 ? 82 : t.cycle == Cycle::G83 ? 83 : t.cycle == Cycle::G73 ? 73 : 81;
+  c.code = std::atoi(to_string(t.cycle) + 1);
   c.z_mm = t.depth_mm;
   c.r_mm = s.r_plane_mm;
   if (c.code == 83 || c.code == 73) c.q_mm = t.peck_mm;
@@ -322,7 +369,13 @@ void write_hobby_program(std::ostream& out, const std::vector<ToolPass>& passes,
     if (first == p.holes.size()) continue;
     const Tool& t = p.tool;
     w.comment("T" + std::to_string(t.number) + " " + tool_name(t) + ", " + std::to_string(p.holes.size() - first) + " HOLES");
-    w.pause_for_tool(t.number, tool_name(t), t.diameter_mm, t.end_mill, s.probe_plate_mm.has_value(), s.initial_z_mm);
+    const char* kind = t.end_mill ? "END MILL"
+                       : t.operation == Operation::Countersink ? "COUNTERSINK"
+                       : t.operation == Operation::Counterbore ? "COUNTERBORE"
+                       : t.operation == Operation::Spot        ? "SPOT DRILL"
+                       : t.operation == Operation::Ream        ? "REAMER"
+                                                               : "DRILL";
+    w.pause_for_tool(t.number, tool_name(t), t.diameter_mm, kind, s.probe_plate_mm.has_value(), s.initial_z_mm);
     w.select_tool(t.number);
     if (s.probe_plate_mm) w.probe_plate(*s.probe_plate_mm, s.probe_feed_mm_min, s.probe_travel_mm);
     w.spindle_on(3, t.spindle_rpm, s.spindle_start_s);
@@ -350,6 +403,11 @@ void write_hobby_program(std::ostream& out, const std::vector<ToolPass>& passes,
       w.comment("HOLE " + std::to_string(p.index[i]));
       w.hole(p.holes[i], !s.retract_to_r || last || clear ? to_initial : to_r, s.r_plane_mm);
     }
+  }
+  // What is left to do by hand (taps), said where the operator stops last.
+  if (!s.final_pause.empty()) {
+    for (const std::string& text : s.final_pause) w.comment(text);
+    w.pause_for("TAP THE HOLES LISTED ABOVE BY HAND, THEN RESUME TO END", "TAP BY HAND: SEE ABOVE", s.initial_z_mm);
   }
   w.end(s.initial_z_mm, s.home);
 }
@@ -400,7 +458,9 @@ void write_program(std::ostream& out, const std::vector<ToolPass>& passes, const
     w.with_comment("T" + std::to_string(t.number) + " M06", tool_name(t));
     if (s.probe_plate_mm) w.probe_plate(t, *s.probe_plate_mm);
     const aco::Point2 h0 = t.end_mill ? milled_stop(p, first, s).start : p.holes[first];
-    w.line("G00 G90 G54 X" + w.c(h0.x) + " Y" + w.c(h0.y) + " S" + std::to_string(t.spindle_rpm) + " M03");
+    // A left-hand tap turns the spindle counter-clockwise: G74 with M04.
+    w.line("G00 G90 G54 X" + w.c(h0.x) + " Y" + w.c(h0.y) + " S" + std::to_string(t.spindle_rpm) +
+           (t.cycle == Cycle::G74 ? " M04" : " M03"));
     char hbuf[16];
     std::snprintf(hbuf, sizeof hbuf, "H%02d", t.number);
     // Probed on the plate, the work offset already holds this tool's length.
@@ -430,6 +490,9 @@ void write_program(std::ostream& out, const std::vector<ToolPass>& passes, const
         mode_initial = want_initial;
         std::string text = w.label(p.index[i]) + retract;
         if (i == first) {
+          // Fanuc taps rigidly only with M29 S before the cycle (its manuals'
+          // rigid tapping; without it G84 is a floating-holder cycle).
+          if (is_tapping(t.cycle) && s.dialect == Dialect::Fanuc) w.line("M29 S" + std::to_string(t.spindle_rpm));
           text += std::string(to_string(t.cycle)) + " X" + w.c(h.x) + " Y" + w.c(h.y) + " Z" + w.c(t.depth_mm) + " R" +
                   w.c(s.r_plane_mm);
           if (t.cycle == Cycle::G83 || t.cycle == Cycle::G73) text += " Q" + w.c(t.peck_mm);

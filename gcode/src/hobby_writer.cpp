@@ -57,15 +57,15 @@ void HobbyWriter::tool_change_sequence(bool touch_plate) {
                         "ZERO Z ON THE PART TOP, RESUME.");
 }
 
-void HobbyWriter::pause_for_tool(int number, const std::string& name, std::optional<double> diameter_mm, bool end_mill,
+void HobbyWriter::pause_for_tool(int number, const std::string& name, std::optional<double> diameter_mm, const std::string& kind,
                                  bool touch_plate, double clear_z_mm) {
   const std::string t = number > 0 ? "T" + std::to_string(number) : std::string("THE DRILL");
   const std::string put_in = "PUT IN " + t + (name.empty() ? std::string() : " " + name);
   // The short form names the tool by its size, whatever a tool table called it.
   std::string shortly = "PUT IN " + t;
   if (diameter_mm) {
-    shortly += " " + short_number(inch_ ? *diameter_mm / kMmPerInch : *diameter_mm, inch_ ? 4 : 3) + (inch_ ? " IN" : " MM") +
-               (end_mill ? " END MILL" : " DRILL");
+    shortly += " " + short_number(inch_ ? *diameter_mm / kMmPerInch : *diameter_mm, inch_ ? 4 : 3) + (inch_ ? " IN " : " MM ") +
+               kind;
   }
   if (touch_plate) {
     pause_for(put_in + ", TOUCH PLATE ON THE PART UNDER IT, CLIP ON, RESUME", shortly + ", PLATE AND CLIP ON", clear_z_mm);

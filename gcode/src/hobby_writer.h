@@ -45,8 +45,9 @@ class HobbyWriter {
   // is what most senders show at the pause (CNCjs, gSender, Candle,
   // OpenBuilds CONTROL); never a word cut.
   void pause_for(const std::string& message, const std::string& short_message, double clear_z_mm);
-  // The tool change pause for tool `number` (its name, diameter, kind), with or without a touch plate.
-  void pause_for_tool(int number, const std::string& name, std::optional<double> diameter_mm, bool end_mill,
+  // The tool change pause for tool `number` (its name, diameter, kind: "DRILL",
+  // "END MILL", "COUNTERSINK", ...), with or without a touch plate.
+  void pause_for_tool(int number, const std::string& name, std::optional<double> diameter_mm, const std::string& kind,
                       bool touch_plate, double clear_z_mm);
   // The header's account of every tool change, for senders that show no message at all.
   void tool_change_sequence(bool touch_plate);

@@ -25,6 +25,9 @@ Inputs read_inputs(const std::vector<InputFile>& files, const formats::InputOpti
     formats::LoadedHoles summary = job.holes;
     summary.holes.clear();
     job.parts.push_back(std::move(summary));
+    // The file's own feature warnings are its part's; the job's (issue 82: what
+    // it makes of the features) are added to the whole, each said once.
+    job.holes.feature_warnings.clear();
     return job;
   }
   formats::LoadedHoles& all = job.holes;

@@ -199,6 +199,15 @@ void PlanJob::Impl::prepare_holes() {
                         "): --round-contours reads them as holes");
   }
   if (loaded.holes.empty()) throw UserError(first_input, 0, "no holes to drill");
+  // Issue 82: each hole feature's operations (taps, counterbores,
+  // countersinks), holes of their own made by tools of their own.
+  const bool canned = gcode::has_canned_cycles(o.program.dialect);
+  planning::Operations ops = planning::add_operations(loaded.holes, o.hole_source, loaded.features,
+                                                      {o.material, o.thickness_mm, canned, canned}, first_input);
+  o.operations = std::move(ops.specs);
+  loaded.feature_warnings.insert(loaded.feature_warnings.end(), ops.warnings.begin(), ops.warnings.end());
+  loaded.skipped.insert(loaded.skipped.end(), ops.not_made.begin(), ops.not_made.end());
+  o.program.final_pause = std::move(ops.by_hand);
   // A panel: every copy of the board, in drawing coordinates, before program zero is chosen on the whole.
   if (!s.panel.empty() || s.panel_file || !s.pitch.empty()) {
     const std::vector<planning::PanelCopy> placements = panel_copies(s.panel, s.pitch, s.panel_file);

@@ -12,8 +12,10 @@ namespace job {
 namespace {
 
 // Whether a tool of `tool_mm` (milling a helix of path radius `milled_r`, or 0) makes a hole of `hole_mm`.
-bool makes(double tool_mm, double milled_r, double hole_mm, const planning::Tooling& tooling) {
+bool makes(double tool_mm, double milled_r, double hole_mm, const planning::Tooling& tooling, std::uint32_t operation) {
   constexpr double kSame = 0.0015;  // a diameter printed with 3 decimals
+  // A tap, a countersink, a counterbore (issue 82): the tool of the operation's own diameter.
+  if (operation != 0) return milled_r == 0 && std::fabs(tool_mm - hole_mm) <= kSame;
   const bool end_mill = tooling.end_mill_mm && std::fabs(tool_mm - *tooling.end_mill_mm) <= kSame;
   if (milled_r > 0) {
     return (!tooling.end_mill_mm || end_mill) && std::fabs(2.0 * milled_r + tool_mm - hole_mm) <= kMilledToleranceMm;
@@ -38,7 +40,7 @@ std::vector<std::string> check_drilled(const gcode::Interpretation& run, const a
   auto cell = [&](double x, double y) { return std::make_pair(std::llround(x / (2 * tol)), std::llround(y / (2 * tol))); };
   for (std::size_t i = 0; i < run.holes.size(); ++i) grid.emplace(cell(run.holes[i].x_mm, run.holes[i].y_mm), i);
   std::vector<std::string> faults;
-  std::map<long long, int> tool_of_diameter;  // diameter (µm) → tool
+  std::map<std::pair<long long, std::uint32_t>, int> tool_of_diameter;  // (diameter µm, operation) → tool
   for (const aco::Hole& h : expected) {
     auto [cx, cy] = cell(h.center.x, h.center.y);
     std::vector<std::size_t> matches;
@@ -62,7 +64,7 @@ std::vector<std::string> check_drilled(const gcode::Interpretation& run, const a
     for (std::size_t m : matches) {
       auto known = run.tool_diameter_mm.find(run.holes[m].tool);
       if (known == run.tool_diameter_mm.end() || h.diameter <= 0 ||
-          makes(known->second, run.holes[m].milled_radius_mm, h.diameter, tooling)) {
+          makes(known->second, run.holes[m].milled_radius_mm, h.diameter, tooling, h.operation)) {
         same_tool.push_back(m);
       }
     }
@@ -87,7 +89,7 @@ std::vector<std::string> check_drilled(const gcode::Interpretation& run, const a
     }
     used[*free] = 1;
     const auto& d = run.holes[*free];
-    const long long key = std::llround(h.diameter * 1000.0);
+    const auto key = std::make_pair(std::llround(h.diameter * 1000.0), h.operation);
     auto [it, inserted] = tool_of_diameter.emplace(key, d.tool);
     // Two tools for one diameter: sister tools (a worn drill replaced) when
     // the program names both with that diameter; otherwise a fault.

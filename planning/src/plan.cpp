@@ -311,6 +311,34 @@ PlanResult plan_job(const aco::HoleSet& holes, const PlanOptions& options, const
   return result;
 }
 
+namespace {
+
+// Issue 82: a tool for each operation the holes name, after the table's own
+// tools, in the order a hole's operations come (the kinds' order, then the
+// diameter), numbered on.
+void append_operation_tools(ToolTable& table, std::vector<std::uint32_t> operations, const PlanOptions& options) {
+  std::sort(operations.begin(), operations.end());
+  operations.erase(std::unique(operations.begin(), operations.end()), operations.end());
+  if (operations.empty()) return;
+  std::stable_sort(operations.begin(), operations.end(), [&](std::uint32_t a, std::uint32_t b) {
+    const OperationSpec& x = options.operations.at(a - 1);
+    const OperationSpec& y = options.operations.at(b - 1);
+    return std::tie(x.kind, x.diameter_mm) < std::tie(y.kind, y.diameter_mm);
+  });
+  int number = 0;
+  for (const ToolTableEntry& e : table.entries) number = std::max(number, e.tool.number);
+  for (std::uint32_t k : operations) {
+    ToolTableEntry e;
+    e.tool = operation_tool(options.operations.at(k - 1), options.material, options.machine);
+    e.tool.number = ++number;
+    e.operation = k;
+    e.min_hole_mm = e.max_hole_mm = e.tool.diameter_mm;
+    table.entries.push_back(e);
+  }
+}
+
+}  // namespace
+
 PlanResult group_holes(const aco::HoleSet& holes, const PlanOptions& options, const std::string& source) {
   const Machine& m = options.machine;
   // A hole without a diameter would become a "0.000 MM DRILL": the user says
@@ -341,12 +369,25 @@ PlanResult group_holes(const aco::HoleSet& holes, const PlanOptions& options, co
   if (options.tooling.owned() && options.tools) {
     throw UserError(source, 0, "--drills and --end-mill plan the tools you own; a --tools table names its own, drop one of them");
   }
-  // The tools of some holes: the owned ones that make them, or one generated drill per diameter.
+  // The tools of some holes: the owned ones that make the drilled holes, or
+  // one generated drill per diameter; then a tool for each operation
+  // (issue 82), in the order a hole's operations come.
   auto tools_for = [&](const aco::HoleSet& some) {
-    if (!options.tooling.owned()) return generate_tool_table(some, options.material, options.thickness_mm, m);
-    std::vector<DrillMapping> mapping;
-    ToolTable t = owned_tool_table(some, options.tooling, options.material, options.thickness_mm, m, source, mapping);
-    result.drill_map.insert(result.drill_map.end(), mapping.begin(), mapping.end());
+    aco::HoleSet drilled;
+    std::vector<std::uint32_t> operations;
+    for (const aco::Hole& h : some) {
+      if (h.operation == 0) drilled.push_back(h);
+      else operations.push_back(h.operation);
+    }
+    ToolTable t;
+    if (!options.tooling.owned()) {
+      t = generate_tool_table(drilled, options.material, options.thickness_mm, m);
+    } else {
+      std::vector<DrillMapping> mapping;
+      t = owned_tool_table(drilled, options.tooling, options.material, options.thickness_mm, m, source, mapping);
+      result.drill_map.insert(result.drill_map.end(), mapping.begin(), mapping.end());
+    }
+    append_operation_tools(t, operations, options);
     return t;
   };
   if (apart) {
@@ -374,6 +415,11 @@ PlanResult group_holes(const aco::HoleSet& holes, const PlanOptions& options, co
   } else if (options.tools) {
     table = *options.tools;
     complete_tool_table(table, options.material, options.thickness_mm, m);
+    std::vector<std::uint32_t> operations;
+    for (const aco::Hole& h : holes) {
+      if (h.operation != 0) operations.push_back(h.operation);
+    }
+    append_operation_tools(table, operations, options);
   } else {
     table = tools_for(holes);
   }
@@ -396,7 +442,8 @@ PlanResult group_holes(const aco::HoleSet& holes, const PlanOptions& options, co
     }
     for (std::size_t t = 0; t < table.entries.size(); ++t) {
       if (table.entries[t].source >= 0 && static_cast<std::uint32_t>(table.entries[t].source) != options.hole_source[i]) continue;
-      if (table.entries[t].takes(d)) {
+      if (table.entries[t].operation != holes[i].operation) continue;
+      if (table.entries[t].operation != 0 || table.entries[t].takes(d)) {
         chosen = t;
         break;
       }

@@ -122,6 +122,9 @@ json holes_of(const job::Result& r) {
     json notes = json::array();
     for (const formats::Note& n : part.warnings) notes.push_back({{"line", n.line}, {"what", n.message}});
     for (const formats::Note& n : part.feature_warnings) notes.push_back({{"line", n.line}, {"what", n.message}});
+    if (k == 0 && !program) {  // the job's own: what it makes of the hole features (issue 82)
+      for (const formats::Note& n : r.inputs.holes.feature_warnings) notes.push_back({{"line", n.line}, {"what", n.message}});
+    }
     json skipped = json::array();
     for (const formats::Note& n : part.skipped) skipped.push_back({{"line", n.line}, {"what", n.message}});
     inputs.push_back({{"file", r.inputs.sources[k].file},

@@ -55,6 +55,7 @@ struct HoleFeature {
   double depth_mm = 0.0;           // counterbore depth from a callout (0: not given)
   double angle_deg = 0.0;          // countersink angle from a callout (0: not given)
   std::string layer;               // the hole's
+  bool inch = false;               // drawn in inches: inch standards first (threads, an 82 degree countersink)
   std::string evidence;            // why: "arc 270 deg, line 812", "layer CBORE", "callout, line 90"
   std::uint32_t line = 0;          // the hole's CIRCLE
 };
@@ -68,7 +69,7 @@ struct RecognizedFeatures {
   aco::HoleSet holes;                 // one a feature, in file order, at the diameter that drills it through
   std::vector<HoleFeature> features;  // the same order
   std::vector<FeatureNote> warnings;  // one line each, for stderr
-  std::vector<FeatureNote> not_made;  // each thing the program will not make (header, report, setup sheet)
+  std::vector<FeatureNote> not_made;  // each undecided circle, never machined (header, report, setup sheet)
 };
 
 // `circles`: the drawing's holes as read (duplicates removed, filters

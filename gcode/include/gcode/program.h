@@ -23,7 +23,14 @@ namespace gcode {
 // out as moves, and a tool change is a pause with a message to the operator.
 enum class Dialect { Haas, Fanuc, LinuxCnc, Grbl, Marlin };
 enum class Units { Mm, Inch };
-enum class Cycle { G81, G82, G83, G73 };
+// G84 tapping (right hand; G74 left hand): feed down at the pitch times the
+// spindle speed, the spindle reversed at the bottom, feed out; G85 reaming:
+// feed down, feed out.
+enum class Cycle { G81, G82, G83, G73, G84, G74, G85 };
+
+// What a tool makes (issue 82), in the order a hole feature's operations
+// come: spot, drill, ream, countersink or counterbore, tap.
+enum class Operation { Spot, Drill, Ream, Countersink, Counterbore, Tap };
 
 struct Tool {
   int number = 1;              // T and H number
@@ -41,6 +48,14 @@ struct Tool {
   // through the centre) instead of drilled with the canned cycle.
   bool end_mill = false;
   double helix_pitch_mm = 0.0;
+  // Issue 82: a tool of a hole feature's operation. A tap's diameter is its
+  // thread's major, its cycle G84 (G74 left hand) at pitch x rpm; a
+  // countersink's the diameter it makes at the top, to its angle; a
+  // counterbore's its own. Drills and end mills are Operation::Drill.
+  Operation operation = Operation::Drill;
+  double pitch_mm = 0.0;   // tap
+  double angle_deg = 0.0;  // countersink, spot drill: the included angle
+  std::string thread;      // tap: "M3", "1/4-20 UNC"
 };
 
 // One tool's holes in drilling order. `index` gives each hole's 1-based number
@@ -81,6 +96,9 @@ struct ProgramSettings {
   std::optional<double> probe_plate_mm;
   double probe_feed_mm_min = 100.0;
   double probe_travel_mm = 30.0;
+  // Issue 82: what the operator does by hand at the end (GRBL and Marlin
+  // cannot tap): each line a comment before one last pause. Empty: none.
+  std::vector<std::string> final_pause;
 };
 
 // How a hole is milled by a helix: about its centre on a circle of
@@ -109,6 +127,10 @@ bool has_canned_cycles(Dialect d);
 std::optional<Dialect> dialect_from_string(const std::string& name);
 const char* to_string(Cycle c);
 std::optional<Cycle> cycle_from_string(const std::string& name);
+const char* to_string(Operation o);  // "spot", "drill", "ream", "countersink", "counterbore", "tap"
+std::optional<Operation> operation_from_string(const std::string& name);
+// The cycle a canned-cycle control makes a tool's holes with: tapping G84 or G74.
+bool is_tapping(Cycle c);
 
 // The tool's name, or "6.350 MM DRILL" ("1.000 MM END MILL") made from its diameter.
 std::string tool_name(const Tool& tool);
@@ -148,6 +170,10 @@ std::string z_home_block(Dialect d);
 
 // Locale-independent fixed-point text: always a decimal point, never "-0.000".
 std::string format_number(double value, int decimals);
+
+// A number as a person reads it, for messages and comments: 6.5 not 6.500,
+// 3 not 3.000 (format_number's rounding, trailing zeros dropped).
+std::string format_short(double value, int decimals = 3);
 
 // The first hole of a pass that the program makes at all, given
 // --resume-from (a milled slot resumed at its second end is milled whole again).

@@ -38,6 +38,10 @@ struct Hole {
   // --slots mill: this hole is one end of a slot (its chain holds both ends,
   // in order) that the end mill mills along its length; `diameter` is its width.
   bool slot_end = false;
+  // Issue 82: 0, the hole is drilled (through); k > 0, another operation of a
+  // hole feature made here (a tap, a counterbore, ...): the job's k-th
+  // operation (planning/operations.h), `diameter` its tool's.
+  std::uint32_t operation = 0;
 };
 
 using HoleSet = std::vector<Hole>;

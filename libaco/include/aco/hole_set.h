@@ -35,7 +35,7 @@ inline std::size_t remove_duplicate_holes(HoleSet& holes, double tolerance_mm = 
         for (std::uint32_t j = it->second; j != UINT32_MAX; j = next_in_cell[j]) {
           const Hole& o = holes[j];
           if (std::fabs(o.center.x - h.center.x) <= tolerance_mm && std::fabs(o.center.y - h.center.y) <= tolerance_mm &&
-              std::fabs(o.diameter - h.diameter) <= tolerance_mm) {
+              std::fabs(o.diameter - h.diameter) <= tolerance_mm && o.operation == h.operation) {
             duplicate = true;
             break;
           }

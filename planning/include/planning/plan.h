@@ -16,6 +16,7 @@
 #include "aco/solve.h"
 #include "gcode/program.h"
 #include "planning/machine.h"
+#include "planning/operations.h"
 #include "planning/placement.h"
 #include "planning/tools.h"
 
@@ -47,6 +48,9 @@ struct PlanOptions {
   // Holes drilled before all others, in this order (alignment pins): their
   // tool goes first and they begin its route.
   std::vector<aco::HoleIndex> first_holes;
+  // Issue 82: the operations of the holes whose aco::Hole::operation is k > 0
+  // (specs[k - 1]), each made by a tool of its own after the drills.
+  std::vector<OperationSpec> operations;
 };
 
 struct ToolGroup {

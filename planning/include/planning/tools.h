@@ -3,6 +3,7 @@
  * The drills of a job: a tool table given (--tools) or generated, one tool per
  * diameter, with feeds and speeds for the material and the machine.
  */
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -30,6 +31,8 @@ struct ToolTableEntry {
   // What a tool table gave; the rest comes from a generated tool of the same
   // diameter (complete_tool_table).
   bool has_rpm = true, has_feed = true, has_depth = true, has_cycle = true;
+  // Issue 82: the operation holes this tool makes (aco::Hole::operation); 0: drilled holes.
+  std::uint32_t operation = 0;
   bool takes(double hole_mm) const;
 };
 
