@@ -305,6 +305,265 @@ TEST(features_test, grbl_and_marlin_drill_the_tap_drill_and_end_with_the_taps_to
   }
 }
 
+// --spot: every drilled hole is spotted first, by one 90-degree spot drill
+// (T1, before every drill), to a cone as wide as the smallest hole; the taps'
+// and counterbores' places are not spotted again. Read back by rs274.
+TEST(features_test, spot_spots_every_drilled_hole_first_with_one_tool) {
+  testutil::TempDir t;
+  for (const std::string dialect : {"haas", "linuxcnc", "grbl"}) {
+    SCOPED_TRACE(dialect);
+    auto r = acodrill_run("plan " + shell_quote(drawing("build_plate")) + " -o " + t / "p.nc" + " --spot --origin drawing --iterations 5 -q --dialect " + dialect);
+    ASSERT_EQ(r.code, 0) << r.err;
+    const std::string program = slurp(t / "p.nc");
+    EXPECT_THAT(program, ::testing::HasSubstr("T1 D=6.000 MM - 90 DEG SPOT DRILL - 6 HOLES"));
+    const oracles::Canon canon = oracles::run_rs274(t / "p.nc");
+    const std::vector<Row> want = expected_rows(testutil::data("dxf-features/build_plate.features.csv"));
+    ASSERT_EQ(want.size(), 6u);
+    for (const Row& w : want) {
+      std::vector<std::size_t> here;
+      for (std::size_t i = 0; i < canon.made.size(); ++i) {
+        if (std::fabs(canon.made[i].x - w.x) <= 0.0006 && std::fabs(canon.made[i].y - w.y) <= 0.0006) here.push_back(i);
+      }
+      ASSERT_GE(here.size(), 2u);
+      // The first thing made here is the spot, as deep as the 2.5 mm tap drill's cone's radius.
+      EXPECT_EQ(canon.made[here[0]].tool, 1);
+      EXPECT_NEAR(canon.made[here[0]].bottom, -1.25, 0.001);
+      for (std::size_t q = 1; q < here.size(); ++q) EXPECT_NE(canon.made[here[q]].tool, 1);
+    }
+    std::size_t spots = 0;
+    for (const oracles::Made& m : canon.made) spots += m.tool == 1;
+    EXPECT_EQ(spots, 6u);
+    auto v = acodrill_run("verify " + t / "p.nc" + " --holes " + shell_quote(drawing("build_plate")) + " --spot -q");
+    EXPECT_EQ(v.code, 0) << v.out;
+  }
+}
+
+// A process table decides before the layer and the callout: the build
+// plate without its callout gets its counterbores from a rule (3.0 mm deep,
+// spotted first), its M3 taps left-hand from another; nothing is left
+// undecided; rs274 reads every operation at its place, in order; holes
+// --features names the rule; verify with the same table passes.
+TEST(features_test, a_process_table_decides_and_gives_each_feature_its_operations) {
+  testutil::TempDir t;
+  testutil::spit(t / "shop.json", R"({"processes": [
+  {"name": "M3 socket head", "kind": "undecided", "diameter_mm": [3.3, 3.5],
+   "operations": ["spot", "drill", {"operation": "counterbore", "depth_mm": 3.0}]},
+  {"thread": "M3", "operations": ["drill", {"operation": "tap", "hand": "left"}]}
+]})");
+  const std::string processes = " --processes " + t / "shop.json";
+  auto shown = acodrill_run("holes " + shell_quote(drawing("build_plate_no_callout")) + " --features -q" + processes);
+  ASSERT_EQ(shown.code, 0) << shown.err;
+  EXPECT_EQ(shown.err, "");
+  std::size_t by_rule = 0;
+  for (std::size_t at = shown.out.find("counterbore,3.400000,6.500000"); at != std::string::npos; at = shown.out.find("counterbore,3.400000,6.500000", at + 1)) ++by_rule;
+  EXPECT_EQ(by_rule, 4u) << shown.out;
+  EXPECT_THAT(shown.out, ::testing::HasSubstr("process 1 (M3 socket head)"));
+  for (const std::string dialect : {"haas", "linuxcnc"}) {
+    SCOPED_TRACE(dialect);
+    auto r = acodrill_run("plan " + shell_quote(drawing("build_plate_no_callout")) + " -o " + t / "p.nc" + " --origin drawing --iterations 5 --dialect " + dialect + processes);
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_THAT(r.err, ::testing::Not(::testing::HasSubstr("not machined")));
+    // The summary and the report count holes drilled and the operations at them apart.
+    EXPECT_THAT(r.err, ::testing::HasSubstr("6 holes and 10 operations at them, 5 tools"));
+    auto reported = acodrill_run("plan " + shell_quote(drawing("build_plate_no_callout")) + " -o " + t / "q.nc" + " --iterations 5 -q --report " +
+                                 t / "r.json" + " --dialect " + dialect + processes);
+    ASSERT_EQ(reported.code, 0) << reported.err;
+    const nlohmann::json report = nlohmann::json::parse(slurp(t / "r.json"));
+    EXPECT_EQ(report["holes"], 6);
+    EXPECT_EQ(report["operations"], 10);
+    std::vector<std::string> kinds;
+    for (const auto& tool : report["tools"]) kinds.push_back(tool["kind"]);
+    EXPECT_EQ(kinds, (std::vector<std::string>{"spot", "drill", "drill", "counterbore", "tap"}));
+    const std::string program = slurp(t / "p.nc");
+    EXPECT_THAT(program, ::testing::HasSubstr("M3 TAP LH"));
+    EXPECT_THAT(program, ::testing::ContainsRegex("G74 X"));
+    EXPECT_EQ(program.find("G84"), std::string::npos);
+    EXPECT_EQ(program.find("NOT MADE"), std::string::npos);
+    const oracles::Canon canon = oracles::run_rs274(t / "p.nc");
+    const std::map<int, double> tools = oracles::tool_diameters(program);
+    for (const Row& w : expected_rows(testutil::data("dxf-features/build_plate_no_callout.features.csv"))) {
+      std::vector<std::pair<double, double>> here;  // (tool's diameter, bottom) in the order made
+      for (const oracles::Made& m : canon.made) {
+        if (std::fabs(m.x - w.x) <= 0.0006 && std::fabs(m.y - w.y) <= 0.0006) here.push_back({tools.at(m.tool), m.bottom});
+      }
+      if (w.kind == "undecided") {
+        ASSERT_EQ(here.size(), 3u) << w.x << "," << w.y;
+        EXPECT_NEAR(here[0].first, 6.0, 1e-9) << "the spot drill first";
+        EXPECT_NEAR(here[0].second, -0.5 * 3.4, 1e-9) << "a cone as wide as the smallest spotted hole (the taps' are not)";
+        EXPECT_NEAR(here[1].first, 3.4, 1e-9);
+        EXPECT_NEAR(here[2].first, 6.5, 1e-9);
+        EXPECT_NEAR(here[2].second, -3.0, 1e-9) << "the rule's depth";
+      } else {
+        ASSERT_EQ(here.size(), 2u) << w.x << "," << w.y;
+        EXPECT_NEAR(here[0].first, 2.5, 1e-9);
+        EXPECT_NEAR(here[1].first, 3.0, 1e-9);
+      }
+    }
+    auto v = acodrill_run("verify " + t / "p.nc" + " --holes " + shell_quote(drawing("build_plate_no_callout")) + " -q" + processes);
+    EXPECT_EQ(v.code, 0) << v.out;
+  }
+}
+
+// Inputs that draw no features (here CSV) are plain holes a rule selects by
+// diameter: a 6 mm hole drilled 5.8 and reamed (G85) to 6, through; the other
+// holes as before.
+TEST(features_test, a_process_table_reams_plain_holes_of_any_input) {
+  testutil::TempDir t;
+  testutil::spit(t / "holes.csv", "x,y,diameter\n0,0,6\n40,0,6\n20,30,4.2\n");
+  testutil::spit(t / "ream.json", R"({"processes": [{"diameter_mm": 6, "operations": ["drill", "ream"]}]})");
+  auto r = acodrill_run("plan " + t / "holes.csv" + " -o " + t / "p.nc" + " --origin drawing --iterations 5 --processes " + t / "ream.json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::string program = slurp(t / "p.nc");
+  EXPECT_THAT(program, ::testing::HasSubstr("6.000 MM REAMER"));
+  EXPECT_THAT(program, ::testing::HasSubstr("5.800 MM DRILL"));
+  EXPECT_THAT(program, ::testing::ContainsRegex("G85 X"));
+  const oracles::Canon canon = oracles::run_rs274(t / "p.nc");
+  const std::map<int, double> tools = oracles::tool_diameters(program);
+  std::map<double, int> made;  // by tool diameter
+  for (const oracles::Made& m : canon.made) {
+    ++made[tools.at(m.tool)];
+    if (tools.at(m.tool) == 6.0) {
+      EXPECT_NEAR(m.bottom, -(6.35 + 1.0), 1e-9) << "through and the reamer's lead";
+    }
+  }
+  EXPECT_EQ(made, (std::map<double, int>{{4.2, 1}, {5.8, 2}, {6.0, 2}}));
+  auto v = acodrill_run("verify " + t / "p.nc" + " --holes " + t / "holes.csv" + " -q --processes " + t / "ream.json");
+  EXPECT_EQ(v.code, 0) << v.out;
+}
+
+// A process table it cannot make is one line naming the file and the rule's
+// line, exit 2, nothing written.
+TEST(features_test, a_bad_process_table_is_one_line_naming_its_line) {
+  testutil::TempDir t;
+  struct Bad {
+    std::string rule, says;
+  };
+  for (const Bad& b : {Bad{R"({"operations": ["drill", "bore"]})", "process 2: operation 2: \"bore\" is no operation"},
+                       Bad{R"({"operations": ["spot", "tap"]})", "process 2: \"operations\" must drill the hole"},
+                       Bad{R"({"thread": "M9x3", "operations": ["drill"]})", "process 2: thread \"M9x3\" is no standard thread"},
+                       Bad{R"({"operations": ["drill", "counterbore", "countersink"]})", "process 2: a hole is counterbored or countersunk, not both"},
+                       Bad{R"({"diameter": 6, "operations": ["drill"]})", "process 2: unknown key \"diameter\""},
+                       Bad{R"({"operations": ["drill", {"operation": "tap", "thread": "M6", "hand": "both"}]})", "process 2: operation 2: \"hand\" must be right or left"}}) {
+    SCOPED_TRACE(b.rule);
+    testutil::spit(t / "bad.json", "{\n  \"processes\": [\n    {\"kind\": \"tapped\", \"operations\": [\"drill\", \"tap\"]},\n    " + b.rule + "\n  ]\n}\n");
+    auto r = acodrill_run("plan " + shell_quote(drawing("build_plate")) + " -o " + t / "p.nc" + " --processes " + t / "bad.json");
+    EXPECT_EQ(r.code, 2);
+    EXPECT_EQ(testutil::count_lines(r.err), 1) << r.err;
+    EXPECT_THAT(r.err, ::testing::HasSubstr("acodrill: error: " + t / "bad.json" + ":4: " + b.says)) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(t / "p.nc"));
+  }
+  // A rule that makes a contradiction names the feature: a reamer no larger than its drill.
+  testutil::spit(t / "ream.json", R"({"processes": [{"kind": "tapped", "operations": [{"operation": "drill", "diameter_mm": 3}, "ream"]}]})");
+  auto r = acodrill_run("plan " + shell_quote(drawing("build_plate")) + " -o " + t / "p.nc" + " --processes " + t / "ream.json");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_THAT(r.err, ::testing::HasSubstr("the drill D3 is not smaller than the reamer D2.459"));
+}
+
+// A tool table may hold the operations' tools: the tap and the counterbore
+// come from it (its speed, the tap's feed its pitch a turn), in the
+// operations' order whatever order the table lists them in; a tap of another
+// pitch is no M3 tap, so the M3 holes get a generated one instead.
+TEST(features_test, a_tool_table_makes_the_operations_its_tools_name) {
+  testutil::TempDir t;
+  testutil::spit(t / "tools.json", R"({"tools": [
+    {"number": 7, "diameter_mm": 3.0, "operation": "tap", "pitch_mm": 0.5, "rpm": 400},
+    {"number": 1, "diameter_mm": 2.5},
+    {"number": 2, "diameter_mm": 3.4},
+    {"number": 3, "diameter_mm": 6.5, "operation": "counterbore", "rpm": 500, "feed_mm_min": 40}]})");
+  auto r = acodrill_run("plan " + shell_quote(drawing("build_plate")) + " -o " + t / "p.nc" + " --iterations 5 -q --tools " + t / "tools.json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  std::string program = slurp(t / "p.nc");
+  std::vector<std::string> order;
+  static const std::regex change(R"(\nT(\d+) M06)");
+  for (std::sregex_iterator it(program.begin(), program.end(), change), end; it != end; ++it) order.push_back((*it)[1]);
+  EXPECT_EQ(order, (std::vector<std::string>{"1", "2", "3", "7"})) << program;
+  EXPECT_EQ(speed_and_feed(program, 7), std::make_pair(400.0, 200.0));
+  EXPECT_EQ(speed_and_feed(program, 3), std::make_pair(500.0, 40.0));
+  EXPECT_THAT(program, ::testing::HasSubstr("(T7 D=3.000 MM - M3 TAP - 2 HOLES)"));
+  auto v = acodrill_run("verify " + t / "p.nc" + " --holes " + shell_quote(drawing("build_plate")) + " -q");
+  EXPECT_EQ(v.code, 0) << v.out;
+
+  testutil::spit(t / "fine.json", R"({"tools": [{"number": 1, "diameter_mm": 2.5}, {"number": 2, "diameter_mm": 3.4},
+    {"number": 5, "diameter_mm": 3.0, "operation": "tap", "pitch_mm": 0.35}]})");
+  r = acodrill_run("plan " + shell_quote(drawing("build_plate")) + " -o " + t / "p.nc" + " --iterations 5 -q --tools " + t / "fine.json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  program = slurp(t / "p.nc");
+  EXPECT_EQ(program.find("T5 M06"), std::string::npos) << "an M3x0.35 tap makes no M3 thread";
+  EXPECT_THAT(program, ::testing::HasSubstr("M3 TAP - 2 HOLES)"));
+  testutil::spit(t / "bad.json", R"({"tools": [{"number": 1, "diameter_mm": 2.5, "operation": "bore"}]})");
+  r = acodrill_run("plan " + shell_quote(drawing("build_plate")) + " -o " + t / "p.nc" + " --tools " + t / "bad.json");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_THAT(r.err, ::testing::HasSubstr("\"operation\" must be one of spot, drill, ream, countersink, counterbore, tap"));
+}
+
+// A CSV's and an XML map's feature columns (thread, counterbore_mm,
+// counterbore_depth_mm, countersink_mm, countersink_angle_deg) make the same
+// features a drawing does: rs274 reads each made at its place with its tool.
+TEST(features_test, csv_and_xml_hole_lists_carry_features) {
+  testutil::TempDir t;
+  testutil::spit(t / "plate.csv",
+                 "x,y,diameter,layer,thread,counterbore_mm,counterbore_depth_mm,countersink_mm\n"
+                 "0,0,5,,M6,,,\n20,0,6.6,,,11,6.4,\n40,0,6.6,,,,,13\n60,0,4,,,,,\n");
+  testutil::spit(t / "plate.xml",
+                 "<holemap units=\"mm\">\n <hole x=\"0\" y=\"0\" diameter=\"5\" thread=\"M6\"/>\n"
+                 " <hole x=\"20\" y=\"0\" diameter=\"6.6\" counterbore_mm=\"11\" counterbore_depth_mm=\"6.4\"/>\n"
+                 " <hole x=\"40\" y=\"0\" diameter=\"6.6\" countersink_mm=\"13\"/>\n <hole x=\"60\" y=\"0\" diameter=\"4\"/>\n</holemap>\n");
+  for (const std::string input : {"plate.csv", "plate.xml"}) {
+    SCOPED_TRACE(input);
+    auto r = acodrill_run("plan " + t / input + " -o " + t / "p.nc" + " --origin drawing --iterations 5 --thickness 10");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_THAT(r.err, ::testing::HasSubstr("1 tapped (M6), 1 counterbored, 1 countersunk"));
+    const std::string program = slurp(t / "p.nc");
+    const oracles::Canon canon = oracles::run_rs274(t / "p.nc");
+    const std::map<int, double> tools = oracles::tool_diameters(program);
+    std::multimap<double, std::pair<double, double>> made;  // x -> (tool, bottom)
+    for (const oracles::Made& m : canon.made) made.insert({m.x, {tools.at(m.tool), m.bottom}});
+    auto at = [&](double x) {
+      std::vector<std::pair<double, double>> v;
+      for (auto [it, end] = made.equal_range(x); it != end; ++it) v.push_back(it->second);
+      return v;
+    };
+    ASSERT_EQ(at(0).size(), 2u);
+    EXPECT_NEAR(at(0)[0].first, 5.0, 1e-9) << "M6's tap drill";
+    EXPECT_NEAR(at(0)[1].first, 6.0, 1e-9) << "the M6 tap";
+    ASSERT_EQ(at(20).size(), 2u);
+    EXPECT_NEAR(at(20)[1].first, 11.0, 1e-9);
+    EXPECT_NEAR(at(20)[1].second, -6.4, 1e-9);
+    ASSERT_EQ(at(40).size(), 2u);
+    EXPECT_NEAR(at(40)[1].first, 13.0, 1e-9);
+    EXPECT_NEAR(at(40)[1].second, -6.5, 1e-9) << "90 degrees: as deep as its radius";
+    EXPECT_EQ(at(60).size(), 1u);
+  }
+  testutil::spit(t / "bad.csv", "x,y,diameter,thread\n0,0,5,M9x3\n");
+  auto bad = acodrill_run("plan " + t / "bad.csv" + " -o " + t / "p.nc");
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_THAT(bad.err, ::testing::HasSubstr(t / "bad.csv" + ":2: thread \"M9x3\" is no standard thread"));
+}
+
+// verify checks the order of each feature's operations: the same program
+// with its taps moved before the drills makes every hole with the right tool
+// and is still wrong, naming both lines.
+TEST(features_test, verify_refuses_a_tap_made_before_its_drill) {
+  testutil::TempDir t;
+  auto r = acodrill_run("plan " + shell_quote(drawing("build_plate")) + " -o " + t / "p.nc" + " --iterations 5 -q");
+  ASSERT_EQ(r.code, 0) << r.err;
+  std::string program = slurp(t / "p.nc");
+  const std::size_t drills = program.find("(T1 2.500 MM DRILL, ");
+  const std::size_t taps = program.find("(T4 M3 TAP, ");
+  ASSERT_NE(drills, std::string::npos) << program;
+  ASSERT_NE(taps, std::string::npos) << program;
+  const std::size_t taps_end = program.find("M01\n", taps) + 4;
+  const std::string tap_block = program.substr(taps, taps_end - taps);
+  program.erase(taps, taps_end - taps);
+  program.insert(drills, tap_block);
+  testutil::spit(t / "taps_first.nc", program);
+  auto v = acodrill_run("verify " + t / "taps_first.nc" + " --holes " + shell_quote(drawing("build_plate")) + " -q");
+  EXPECT_EQ(v.code, 1) << v.out << v.err;
+  EXPECT_THAT(v.out + v.err, ::testing::ContainsRegex(R"(hole \([0-9.]+, [0-9.]+\): the tap \(line [0-9]+\) comes before the drill \(line [0-9]+\))"));
+  auto as_planned = acodrill_run("verify " + t / "p.nc" + " --holes " + shell_quote(drawing("build_plate")) + " -q");
+  EXPECT_EQ(as_planned.code, 0) << as_planned.out;
+}
+
 // What contradicts is one line naming the feature, exit 2, nothing written:
 // a counterbore deeper than the part.
 TEST(features_test, a_counterbore_as_deep_as_the_part_is_refused_in_one_line) {

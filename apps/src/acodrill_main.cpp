@@ -88,6 +88,11 @@ void add_input_options(CLI::App* cmd, cli::InputArgs& args) {
   cmd->add_option("--apertures", args.apertures,
                   "Aperture list of an RS-274D Gerber file: rows \"D10 C 0.032\" (D code, shape C/R/O, size; inch unless "
                   "a suffix MM/MIL or a line UNITS MM|INCH|MILS says), or RS-274X %FS/%MO/%AD lines");
+  cmd->add_option("--processes", args.processes,
+                  "Process table (JSON): which hole features get which operations, first rule that selects one wins. "
+                  "{\"processes\": [{\"layer\": \"M6\", \"operations\": [\"spot\", \"drill\", {\"operation\": \"tap\", "
+                  "\"thread\": \"M6\"}]}]}; a rule selects by layer, kind, diameter_mm (N or [min, max]) and thread; "
+                  "operations: spot, drill, ream, countersink, counterbore, tap (README: Holes as drawn)");
   cmd->add_option("--max-expansion", a.max_expansion,
                   "Refuse DXF files whose blocks expand to more references than this (default 10000000)")
       ->check(CLI::Range(std::size_t{1}, std::size_t{1'000'000'000}));
@@ -211,6 +216,9 @@ int main(int argc, char** argv) {
                        "tools' speeds and the default dialect. Default: vf2");
   plan_cmd->add_option("--material", ps.material, "steel | aluminium | pcb: feeds and speeds of generated tools (default steel; pcb for Excellon and Gerber input)");
   plan_cmd->add_option("--thickness", ps.thickness_mm, "Part thickness in mm for generated tools (default 6.35, or 1.6 for pcb)");
+  plan_cmd->add_flag("--spot", ps.spot,
+                     "Spot every drilled hole first with one 90-degree spot drill (6 mm; 10 mm when a hole is larger), "
+                     "to a cone as wide as the smallest hole; off by default (a machine profile's \"spot\": true turns it on)");
   plan_cmd->add_option("--default-diameter", ps.default_diameter_mm,
                        "Diameter in mm of holes the input gives none (CSV rows without one, TSPLIB nodes)")
       ->check(CLI::Range(1e-6, 1e4));
@@ -286,6 +294,7 @@ int main(int argc, char** argv) {
                          "program's header states, else the input's own coordinates");
   verify_cmd->add_option("--panel", verify.panel, "The panel plan was given (COLSxROWS with --pitch, or a panel file)");
   verify_cmd->add_option("--pitch", verify.pitch, "DX,DY in mm, with --panel COLSxROWS");
+  verify_cmd->add_flag("--spot", verify.spot, "plan was given --spot: every drilled hole is spotted first");
   verify_cmd->add_flag("-q,--quiet", quiet, "No summary on stderr");
   add_bench_options(verify_cmd, verify.bench, false);
   add_input_options(verify_cmd, verify_in);

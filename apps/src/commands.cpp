@@ -40,6 +40,7 @@ double seconds_since_start() {
 job::InputSettings read_input_settings(const InputArgs& a) {
   job::InputSettings s = a.settings;
   if (!a.apertures.empty()) s.apertures = job::NamedText{a.apertures, app::read_file(a.apertures)};
+  if (!a.processes.empty()) s.processes = job::NamedText{a.processes, app::read_file(a.processes)};
   return s;
 }
 
@@ -197,7 +198,9 @@ int cmd_verify(const VerifyArgs& a, const InputArgs& in, bool quiet) {
   if (a.holes.empty()) return 0;
   std::string holes_path;
   for (const std::string& p : a.holes) holes_path += (holes_path.empty() ? "" : " + ") + p;
-  app::LoadedHoles expected = app::load_job(a.holes, job::input_options(read_input_settings(in))).holes;
+  const formats::InputOptions in_options = job::input_options(read_input_settings(in));
+  app::LoadedHoles expected = app::load_job(a.holes, in_options).holes;
+  std::vector<gcode::Operation> operation_kinds;  // of the features' operations, in their order
   {
     // Issue 82: the operations plan makes of the hole features: taps where the
     // program has canned cycles (GRBL and Marlin leave them to the operator).
@@ -211,8 +214,11 @@ int cmd_verify(const VerifyArgs& a, const InputArgs& in, bool quiet) {
     }
     const bool cycles = std::regex_search(code, canned);
     std::vector<std::uint32_t> no_sources;
-    planning::add_operations(expected.holes, no_sources, expected.features, {planning::Material::Steel, 1e9, cycles, cycles},
-                             holes_path);
+    planning::OperationSettings settings{planning::Material::Steel, 1e9, cycles, cycles};
+    settings.spot = a.spot;
+    settings.processes = in_options.processes.get();
+    const planning::Operations ops = planning::add_operations(expected.holes, no_sources, expected.features, settings, holes_path);
+    for (const planning::OperationSpec& spec : ops.specs) operation_kinds.push_back(spec.kind);
   }
   if (!a.panel.empty() || !a.pitch.empty()) {
     std::string grid;
@@ -243,7 +249,7 @@ int cmd_verify(const VerifyArgs& a, const InputArgs& in, bool quiet) {
   } else {
     job::turn_and_place(expected.holes, a.bench, nullptr, nullptr, nullptr);
   }
-  const std::vector<std::string> faults = job::check_drilled(run, expected.holes, tooling);
+  const std::vector<std::string> faults = job::check_drilled(run, expected.holes, tooling, operation_kinds);
   if (!faults.empty()) return print_faults(faults, a.program, quiet);
   std::printf("ok: %zu input holes drilled once each with the right tool\n", expected.holes.size());
   return 0;

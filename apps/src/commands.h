@@ -19,6 +19,7 @@ double seconds_since_start();
 struct InputArgs {
   job::InputSettings settings;
   std::string apertures;  // path of an aperture list
+  std::string processes;  // path of a process table (issue 82)
 };
 // The settings with the aperture list read.
 job::InputSettings read_input_settings(const InputArgs& a);
@@ -40,6 +41,7 @@ struct VerifyArgs {
   std::string program, origin, panel, pitch;
   std::vector<std::string> holes;
   job::BenchSettings bench;
+  bool spot = false;  // plan was given --spot (issue 82)
 };
 int cmd_verify(const VerifyArgs& a, const InputArgs& in, bool quiet);
 int cmd_machines(const std::string& show);

@@ -57,12 +57,13 @@ const std::map<std::string, std::string>& settings() {
       {"SIDE", "--side"},               {"MIRROR_AXIS", "--mirror-axis"}, {"ALIGNMENT_PINS", "--alignment-pins"},
       {"APERTURES", "--apertures"},     {"SEED", "--seed"},           {"THREADS", "--threads"},
       {"EXCELLON_FORMAT", "--excellon-format"}, {"DXF_UNITS", "--dxf-units"}, {"ROUND_TOLERANCE", "--round-tolerance"},
-      {"ROUND_CONTOURS", "--round-contours"}, {"CONCENTRIC", "--concentric"}};
+      {"ROUND_CONTOURS", "--round-contours"}, {"CONCENTRIC", "--concentric"}, {"PROCESSES", "--processes"},
+      {"SPOT", "--spot"}};
   return keys;
 }
 
 // Keys that switch an option on or off (YES/NO, TRUE/FALSE, 1/0) rather than give it a value.
-bool is_switch(const std::string& key) { return key == "ROUND_CONTOURS"; }
+bool is_switch(const std::string& key) { return key == "ROUND_CONTOURS" || key == "SPOT"; }
 
 [[noreturn]] void fail(const std::string& where, const std::string& what) {
   std::fprintf(stderr, "acodrill: error: %s%s%s\n", where.c_str(), where.empty() ? "" : ": ", what.c_str());

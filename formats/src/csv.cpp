@@ -1,7 +1,11 @@
-// CSV hole lists: x,y[,diameter[,layer]] rows, header optional.
+// CSV hole lists: x,y[,diameter[,layer]] rows, header optional; a header
+// may name feature columns (issue 82): thread, counterbore_mm,
+// counterbore_depth_mm, countersink_mm, countersink_angle_deg.
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 
+#include "formats/features.h"
 #include "formats/readers.h"
 #include "text.h"
 
@@ -14,6 +18,13 @@ LoadedHoles parse_csv(const std::string& path, std::string_view data, const Inpu
   const double unit = options.default_unit_mm;
   bool first_data = true;
   std::size_t header_fields = 0;  // 0: no header
+  // Feature columns by the header's names (npos: not there).
+  enum Column { Thread, Counterbore, CounterboreDepth, Countersink, CountersinkAngle, Columns };
+  static const char* const kColumnNames[Columns] = {"thread", "counterbore_mm", "counterbore_depth_mm", "countersink_mm",
+                                                    "countersink_angle_deg"};
+  std::size_t column[Columns];
+  std::fill(std::begin(column), std::end(column), std::string_view::npos);
+  bool any_feature_column = false;
   for_each_line(data, [&](std::uint32_t no, std::string_view line) {
     std::string_view t = trim(line);
     if (t.empty() || t.front() == '#') return true;
@@ -34,6 +45,13 @@ LoadedHoles parse_csv(const std::string& path, std::string_view data, const Inpu
       if (first_data && out.holes.empty() && !x_ok && cells.size() >= 2 && !parse_number(cells[1], y)) {
         first_data = false;
         header_fields = cells.size();
+        for (std::size_t c = 0; c < cells.size(); ++c) {
+          std::string name(cells[c]);
+          std::transform(name.begin(), name.end(), name.begin(), [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
+          for (int k = 0; k < Columns; ++k) {
+            if (name == kColumnNames[k]) column[k] = c, any_feature_column = true;
+          }
+        }
         return true;
       }
       throw InputError(path, no, "expected x,y[,diameter[,layer]] numbers, found \"" + std::string(t.substr(0, 60)) + "\"");
@@ -53,6 +71,27 @@ LoadedHoles parse_csv(const std::string& path, std::string_view data, const Inpu
     h.diameter = d * unit;
     if (cells.size() >= 4) h.layer = std::string(cells[3]);
     h.source_line = no;
+    if (any_feature_column) {
+      // The row's feature: a thread taps it (drilled at its tap drill), a
+      // counterbore or countersink diameter makes one; none, a plain hole.
+      auto cell = [&](int k) { return column[k] < cells.size() ? cells[column[k]] : std::string_view(); };
+      auto number = [&](int k) {
+        double v = 0.0;
+        if (cell(k).empty()) return 0.0;
+        if (!parse_number(cell(k), v) || !(v > 0)) {
+          throw InputError(path, no, std::string(kColumnNames[k]) + " \"" + std::string(cell(k)) + "\" is not a positive number");
+        }
+        return v;
+      };
+      ListedFeature given;
+      given.thread = std::string(cell(Thread));
+      given.counterbore_mm = number(Counterbore) * unit;
+      given.counterbore_depth_mm = number(CounterboreDepth) * unit;
+      given.countersink_mm = number(Countersink) * unit;
+      given.countersink_angle_deg = number(CountersinkAngle);
+      HoleFeature f = listed_feature(h, given, unit == 25.4, options.processes.get(), path);
+      out.features.push_back(std::move(f));
+    }
     out.holes.push_back(std::move(h));
     check_limit(path, no, out.holes.size(), options.dxf.max_holes);
     return true;

@@ -12,6 +12,8 @@
 #include <unordered_map>
 
 #include "aco/utf8.h"
+#include "formats/error.h"
+#include "formats/processes.h"
 #include "formats/threads.h"
 #include "gcode/program.h"
 
@@ -294,7 +296,8 @@ std::string plain_callout(const std::string& text, bool gdt_font) {
 }
 
 RecognizedFeatures recognize_features(const aco::HoleSet& circles, const std::vector<dxf::DrawnArc>& arcs,
-                                      const std::vector<dxf::DrawnText>& texts, double unit_mm) {
+                                      const std::vector<dxf::DrawnText>& texts, double unit_mm,
+                                      const ProcessTable* processes) {
   RecognizedFeatures r;
   // 1. Concentric circles into groups: each circle's root is the first circle
   // of its group in file order (union-find over the pairs within kConcentricMm).
@@ -465,8 +468,43 @@ RecognizedFeatures recognize_features(const aco::HoleSet& circles, const std::ve
         f.evidence += "; " + std::string(bore ? "counterbore" : "countersink") + " D" + gcode::format_short(d) + " by " + decided_ring->evidence;
       }
     }
+    // A process table's rule decides first: its counterbore or countersink
+    // is the larger circle of its diameter (the step's, else the smallest
+    // undecided one, else the one the drawing decided).
+    const Ring* by_rule = nullptr;
+    if (processes != nullptr) {
+      if (f.kind == FeatureKind::Plain && !f.undecided_mm.empty()) f.kind = FeatureKind::Undecided;
+      f.rule = matching_rule(*processes, f, to_string(f.kind));
+      const ProcessRule* rule = f.rule ? &processes->rules[f.rule - 1] : nullptr;
+      const ProcessStep* bore = rule ? step_of(*rule, gcode::Operation::Counterbore) : nullptr;
+      const ProcessStep* sink = rule ? step_of(*rule, gcode::Operation::Countersink) : nullptr;
+      const ProcessStep* step = bore ? bore : sink;
+      if (step != nullptr && !g.rings.empty()) {
+        for (const Ring& ring : g.rings) {
+          const double d = circles[ring.circle].diameter;
+          if (step->diameter_mm ? same_diameter(d, *step->diameter_mm) : ring.kind == FeatureKind::Undecided) {
+            by_rule = &ring;
+            break;
+          }
+        }
+        if (by_rule == nullptr && !step->diameter_mm) by_rule = decided_ring;
+      }
+      if (by_rule != nullptr && !g.thread) {
+        f.kind = bore ? FeatureKind::Counterbore : FeatureKind::Countersink;
+        f.outer_diameter_mm = circles[by_rule->circle].diameter;
+        f.depth_mm = by_rule == decided_ring ? f.depth_mm : 0.0;
+        f.angle_deg = by_rule == decided_ring ? f.angle_deg : 0.0;
+        f.evidence = rule->where;
+        const double d = circles[by_rule->circle].diameter;
+        f.undecided_mm.erase(std::remove(f.undecided_mm.begin(), f.undecided_mm.end(), d), f.undecided_mm.end());
+        if (f.undecided_mm.empty() && f.kind == FeatureKind::Undecided) f.kind = FeatureKind::Plain;
+      } else if (rule != nullptr) {
+        f.evidence += (f.evidence.empty() ? "" : "; ") + rule->where;
+      }
+      if (f.kind == FeatureKind::Undecided) f.kind = FeatureKind::Plain;  // made so again below
+    }
     for (const Ring& ring : g.rings) {
-      if (ring.kind != FeatureKind::Undecided) continue;
+      if (ring.kind != FeatureKind::Undecided || &ring == by_rule) continue;
       const double d = circles[ring.circle].diameter;
       ++undecided[d];
       r.not_made.push_back({circles[ring.circle].source_line,
@@ -476,7 +514,7 @@ RecognizedFeatures recognize_features(const aco::HoleSet& circles, const std::ve
     if (f.kind == FeatureKind::Plain && !f.undecided_mm.empty()) {
       f.kind = FeatureKind::Undecided;
       f.outer_diameter_mm = f.undecided_mm.front();
-      f.evidence = "concentric circle(s), nothing says which";
+      f.evidence = "concentric circle(s), nothing says which" + (f.evidence.empty() ? "" : "; " + f.evidence);
     }
     aco::Hole drilled = hole;
     drilled.diameter = f.drill_mm;
@@ -493,6 +531,48 @@ RecognizedFeatures recognize_features(const aco::HoleSet& circles, const std::ve
                                  "callout, says which; --concentric separate drills every circle through"});
   }
   return r;
+}
+
+HoleFeature listed_feature(aco::Hole& hole, const ListedFeature& given, bool inch, const ProcessTable* processes,
+                           const std::string& path) {
+  const std::uint32_t no = hole.source_line;
+  HoleFeature f;
+  f.center = hole.center;
+  f.diameter_mm = f.drill_mm = hole.diameter;
+  f.layer = hole.layer;
+  f.line = no;
+  f.inch = inch;
+  f.evidence = "listed";
+  if (given.counterbore_mm < 0 || given.counterbore_depth_mm < 0 || given.countersink_mm < 0 || given.countersink_angle_deg < 0 ||
+      given.countersink_angle_deg >= 180) {
+    throw InputError(path, no, "a counterbore's or countersink's size must be positive (an angle below 180)");
+  }
+  const double bore = given.counterbore_mm, sink = given.countersink_mm;
+  if (!given.thread.empty()) {
+    const Thread* t = find_thread(given.thread);
+    if (t == nullptr) {
+      throw InputError(path, no, "thread \"" + given.thread + "\" is no standard thread (ISO metric coarse or fine: M6, M10x1.25; UNC, UNF: 1/4-20 UNC)");
+    }
+    if (bore > 0 || sink > 0) throw InputError(path, no, "a tapped hole is not counterbored or countersunk here");
+    f.kind = FeatureKind::Tapped;
+    f.thread = t->name;
+    f.pitch_mm = t->pitch_mm;
+    f.outer_diameter_mm = t->major_mm;
+    f.drill_mm = hole.diameter = t->tap_drill_mm;
+  } else if (bore > 0 && sink > 0) {
+    throw InputError(path, no, "a hole is counterbored or countersunk, not both");
+  } else if (bore > 0 || sink > 0) {
+    f.kind = bore > 0 ? FeatureKind::Counterbore : FeatureKind::Countersink;
+    f.outer_diameter_mm = bore > 0 ? bore : sink;
+    f.depth_mm = bore > 0 ? given.counterbore_depth_mm : 0.0;
+    f.angle_deg = sink > 0 ? given.countersink_angle_deg : 0.0;
+    if (!(f.outer_diameter_mm > hole.diameter)) {
+      throw InputError(path, no, std::string(bore > 0 ? "counterbore" : "countersink") + " D" + gcode::format_short(f.outer_diameter_mm) +
+                                     " is no larger than its hole D" + gcode::format_short(hole.diameter));
+    }
+  }
+  if (processes != nullptr) f.rule = matching_rule(*processes, f, to_string(f.kind));
+  return f;
 }
 
 std::string features_summary(const std::vector<HoleFeature>& features) {

@@ -169,7 +169,7 @@ LoadedHoles parse_holes(const std::string& path, std::string_view data, const In
         out.holes = std::move(r.holes);
         for (const auto& d : r.diagnostics) out.warnings.push_back({d.line, d.message});
         if (!options.concentric_separate) {
-          RecognizedFeatures f = recognize_features(out.holes, r.arcs, r.texts, r.unit_mm);
+          RecognizedFeatures f = recognize_features(out.holes, r.arcs, r.texts, r.unit_mm, options.processes.get());
           out.holes = std::move(f.holes);
           out.features = std::move(f.features);
           for (const FeatureNote& n : f.warnings) out.feature_warnings.push_back({n.line, n.message});

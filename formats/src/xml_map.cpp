@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "formats/features.h"
 #include "formats/readers.h"
 #include "text.h"
 
@@ -36,6 +37,8 @@ LoadedHoles parse_xml_map(const std::string& path, std::string_view data, const 
     else throw InputError(path, static_cast<std::uint32_t>(root->GetLineNum()), "units must be \"mm\" or \"inch\", not \"" + us + "\"");
   }
   if (const char* n = root->Attribute("name")) out.name = n;
+  std::vector<HoleFeature> listed;
+  bool any_feature = false;
   for (const tinyxml2::XMLElement* e = root->FirstChildElement(); e; e = e->NextSiblingElement()) {
     const auto line = static_cast<std::uint32_t>(e->GetLineNum());
     if (std::strcmp(e->Name(), "hole") != 0) {
@@ -57,9 +60,21 @@ LoadedHoles parse_xml_map(const std::string& path, std::string_view data, const 
     if (h.diameter < 0) throw InputError(path, line, "negative diameter");
     if (const char* layer = e->Attribute("layer")) h.layer = layer;
     h.source_line = line;
+    // Issue 82: a hole's feature, as attributes (README, "Holes as drawn").
+    ListedFeature given;
+    if (const char* thread = e->Attribute("thread")) given.thread = thread;
+    given.counterbore_mm = attr("counterbore_mm", false, 0.0);
+    given.counterbore_depth_mm = attr("counterbore_depth_mm", false, 0.0);
+    given.countersink_mm = attr("countersink_mm", false, 0.0);
+    given.countersink_angle_deg = attr("countersink_angle_deg", false, 0.0);
+    if (!given.thread.empty() || given.counterbore_mm != 0 || given.countersink_mm != 0) any_feature = true;
+    given.counterbore_mm *= unit, given.counterbore_depth_mm *= unit, given.countersink_mm *= unit;
+    listed.push_back(listed_feature(h, given, unit == 25.4, options.processes.get(), path));
     out.holes.push_back(std::move(h));
     check_limit(path, line, out.holes.size(), options.dxf.max_holes);
   }
+  // Features only where the map gives one: a plain map stays the thesis's.
+  if (any_feature) out.features = std::move(listed);
   return out;
 }
 

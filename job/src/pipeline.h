@@ -79,6 +79,7 @@ struct PlanJob::Impl {
   planning::Origin origin;
   std::string source;       // the inputs as messages name them
   std::vector<std::string> side_notes;
+  std::shared_ptr<const formats::ProcessTable> processes;  // --processes (issue 82)
   std::unique_ptr<planning::GroupRouter> router;
   bool done = false;
   // Progress: the tool whose best is known, and when the last call was.

@@ -163,7 +163,9 @@ void PlanJob::Impl::prepare(std::vector<InputFile> files) {
     if (auto refusal = gcode::probe_plate_refusal(o.program.dialect)) throw UserError(*refusal);
   }
   for (const InputFile& f : files) source += (source.empty() ? "" : " + ") + (f.name == "-" ? std::string("<stdin>") : f.name);
-  r.inputs = read_inputs(files, input_options(s.input));
+  const formats::InputOptions in_options = input_options(s.input);
+  processes = in_options.processes;
+  r.inputs = read_inputs(files, in_options);
   files.clear();
   o.solver.time_limit_s = time_left(o.solver.time_limit_s, seconds());
   o.solver.stop = stop_flag;
@@ -202,8 +204,10 @@ void PlanJob::Impl::prepare_holes() {
   // Issue 82: each hole feature's operations (taps, counterbores,
   // countersinks), holes of their own made by tools of their own.
   const bool canned = gcode::has_canned_cycles(o.program.dialect);
-  planning::Operations ops = planning::add_operations(loaded.holes, o.hole_source, loaded.features,
-                                                      {o.material, o.thickness_mm, canned, canned}, first_input);
+  planning::OperationSettings op_settings{o.material, o.thickness_mm, canned, canned};
+  op_settings.spot = s.spot || o.machine.spot;
+  op_settings.processes = processes.get();
+  planning::Operations ops = planning::add_operations(loaded.holes, o.hole_source, loaded.features, op_settings, first_input);
   o.operations = std::move(ops.specs);
   loaded.feature_warnings.insert(loaded.feature_warnings.end(), ops.warnings.begin(), ops.warnings.end());
   loaded.skipped.insert(loaded.skipped.end(), ops.not_made.begin(), ops.not_made.end());
@@ -313,8 +317,10 @@ void PlanJob::Impl::write_hole_program() {
   }
   std::string text = program.str();
   if (s.break_writer_for_test) text = detail::broken_for_test(std::move(text));
+  std::vector<gcode::Operation> operation_kinds;
+  for (const planning::OperationSpec& spec : o.operations) operation_kinds.push_back(spec.kind);
   detail::check_own_program(self_check(text, holes_written(r.holes, passes, s.resume_from),
-                                       o.tools ? tooling_of_table(*o.tools) : o.tooling),
+                                       o.tools ? tooling_of_table(*o.tools) : o.tooling, operation_kinds),
                             s.program_name);
   r.files.program = std::move(text);
   ReportContext ctx{source, s.program_name, placement, loaded.name, &loaded, {}, 1, 1, std::nullopt};

@@ -1,5 +1,7 @@
 #include "job/report.h"
 
+#include <algorithm>
+
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -16,7 +18,12 @@ double pct_saved(double before, double after) { return before > 0 ? round6(100.0
 
 std::string report_json(const aco::HoleSet& holes, const PlanResult& plan, const ReportContext& ctx) {
   nlohmann::ordered_json j;
-  j["holes"] = holes.size();
+  // Issue 82: the holes drilled; a hole feature's other operations (taps,
+  // counterbores, ...) made at them are counted apart.
+  const auto operations = static_cast<std::size_t>(
+      std::count_if(holes.begin(), holes.end(), [](const aco::Hole& h) { return h.operation != 0; }));
+  j["holes"] = holes.size() - operations;
+  j["operations"] = operations;
   j["tools"] = nlohmann::ordered_json::array();
   for (const ToolGroup& g : plan.groups) {
     nlohmann::ordered_json t;
@@ -24,7 +31,7 @@ std::string report_json(const aco::HoleSet& holes, const PlanResult& plan, const
     t["diameter_mm"] = round6(g.tool.diameter_mm);
     t["holes"] = g.optimized.size();
     t["cycle"] = gcode::cycle_description(g.tool, ctx.dialect);
-    t["kind"] = g.tool.end_mill ? "end_mill" : "drill";
+    t["kind"] = g.tool.end_mill ? "end_mill" : gcode::to_string(g.tool.operation);  // drill, tap, counterbore, ...
     t["spindle_rpm"] = g.tool.spindle_rpm;
     t["feed_mm_min"] = round6(g.tool.feed_mm_min);
     t["depth_mm"] = round6(g.tool.depth_mm);

@@ -2,6 +2,8 @@
 // messages name the command line's options, which the page's controls mirror.
 #include "job/settings.h"
 
+#include "planning/operations.h"
+
 #include <cstdio>
 #include <map>
 
@@ -90,6 +92,9 @@ formats::InputOptions input_options(const InputSettings& a) {
     throw UserError("--concentric must be features or separate (got \"" + a.concentric + "\")");
   }
   o.concentric_separate = a.concentric == "separate";
+  if (a.processes) {
+    o.processes = std::make_shared<const formats::ProcessTable>(planning::parse_process_table(a.processes->text, a.processes->name));
+  }
   o.dxf.round_tolerance = a.round_tolerance_pct / 100.0;
   if (!a.dxf_units.empty()) {
     const std::map<std::string, double> units = {{"mm", 1.0},    {"cm", 10.0}, {"m", 1000.0},   {"inch", 25.4},

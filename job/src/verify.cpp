@@ -30,7 +30,8 @@ bool makes(double tool_mm, double milled_r, double hole_mm, const planning::Tool
 }  // namespace
 
 std::vector<std::string> check_drilled(const gcode::Interpretation& run, const aco::HoleSet& expected,
-                                       const planning::Tooling& tooling) {
+                                       const planning::Tooling& tooling,
+                                       const std::vector<gcode::Operation>& operation_kinds) {
   // Each input hole must be drilled exactly once, at its place (within the
   // program's printed precision), by a tool of its diameter.
   const double tol = run.inch ? 0.00006 * 25.4 + 1e-6 : 0.0006 + 1e-6;
@@ -41,6 +42,9 @@ std::vector<std::string> check_drilled(const gcode::Interpretation& run, const a
   for (std::size_t i = 0; i < run.holes.size(); ++i) grid.emplace(cell(run.holes[i].x_mm, run.holes[i].y_mm), i);
   std::vector<std::string> faults;
   std::map<std::pair<long long, std::uint32_t>, int> tool_of_diameter;  // (diameter µm, operation) → tool
+  // Issue 82: where each hole feature's operations are made (program hole
+  // index, by the expected hole), to check their order at each place.
+  std::vector<std::size_t> made_by(expected.size(), run.holes.size());
   for (const aco::Hole& h : expected) {
     auto [cx, cy] = cell(h.center.x, h.center.y);
     std::vector<std::size_t> matches;
@@ -88,6 +92,7 @@ std::vector<std::string> check_drilled(const gcode::Interpretation& run, const a
       continue;
     }
     used[*free] = 1;
+    made_by[static_cast<std::size_t>(&h - expected.data())] = *free;
     const auto& d = run.holes[*free];
     const auto key = std::make_pair(std::llround(h.diameter * 1000.0), h.operation);
     auto [it, inserted] = tool_of_diameter.emplace(key, d.tool);
@@ -97,6 +102,31 @@ std::vector<std::string> check_drilled(const gcode::Interpretation& run, const a
     if (!inserted && it->second != d.tool && !sisters) {
       faults.push_back("holes of D" + gcode::format_number(h.diameter, 3) + " are drilled with T" +
                        std::to_string(it->second) + " and T" + std::to_string(d.tool));
+    }
+  }
+  if (!operation_kinds.empty()) {
+    // A feature's operations share its hole's place exactly: by place, each
+    // in its kind's turn (a countersink and a counterbore share theirs).
+    auto kind_of = [&](const aco::Hole& h) {
+      return h.operation == 0 || h.operation > operation_kinds.size() ? gcode::Operation::Drill : operation_kinds[h.operation - 1];
+    };
+    auto turn = [](gcode::Operation k) { return k == gcode::Operation::Counterbore ? static_cast<int>(gcode::Operation::Countersink) : static_cast<int>(k); };
+    std::map<std::pair<double, double>, std::vector<std::size_t>> at_place;
+    for (std::size_t k = 0; k < expected.size(); ++k) {
+      if (made_by[k] < run.holes.size()) at_place[{expected[k].center.x, expected[k].center.y}].push_back(k);
+    }
+    for (auto& [place, ks] : at_place) {
+      if (ks.size() < 2) continue;
+      std::sort(ks.begin(), ks.end(), [&](std::size_t a, std::size_t b) { return made_by[a] < made_by[b]; });
+      for (std::size_t q = 1; q < ks.size(); ++q) {
+        const aco::Hole& before = expected[ks[q - 1]];
+        const aco::Hole& after = expected[ks[q]];
+        if (turn(kind_of(before)) <= turn(kind_of(after))) continue;
+        const std::string at = "(" + gcode::format_number(place.first, 3) + ", " + gcode::format_number(place.second, 3) + ")";
+        faults.push_back("hole " + at + ": the " + gcode::to_string(kind_of(before)) + " (line " +
+                         std::to_string(run.holes[made_by[ks[q - 1]]].line) + ") comes before the " +
+                         gcode::to_string(kind_of(after)) + " (line " + std::to_string(run.holes[made_by[ks[q]]].line) + ")");
+      }
     }
   }
   std::multimap<std::pair<long long, long long>, std::size_t> expected_grid;
@@ -193,9 +223,9 @@ planning::Tooling tooling_of_table(const planning::ToolTable& table) {
 }
 
 std::vector<std::string> self_check(const std::string& program_text, const aco::HoleSet& expected,
-                                    const planning::Tooling& tooling) {
+                                    const planning::Tooling& tooling, const std::vector<gcode::Operation>& operation_kinds) {
   try {
-    return check_drilled(gcode::interpret(program_text), expected, tooling);
+    return check_drilled(gcode::interpret(program_text), expected, tooling, operation_kinds);
   } catch (const gcode::ProgramError& e) {
     return {"the program does not read back: line " + std::to_string(e.line()) + ": " + e.what()};
   }

@@ -1,6 +1,8 @@
 #include "planning/plan.h"
 
 #include <algorithm>
+#include <numeric>
+#include <set>
 #include <chrono>
 #include <cmath>
 #include <map>
@@ -313,13 +315,16 @@ PlanResult plan_job(const aco::HoleSet& holes, const PlanOptions& options, const
 
 namespace {
 
-// Issue 82: a tool for each operation the holes name, after the table's own
-// tools, in the order a hole's operations come (the kinds' order, then the
-// diameter), numbered on.
-void append_operation_tools(ToolTable& table, std::vector<std::uint32_t> operations, const PlanOptions& options) {
+// Issue 82: a tool for each operation the holes name, in the order a hole's
+// operations come (the kinds' order, then the diameter): spot drills before
+// the table's own tools, the others after. `renumber`: the table is
+// generated, so its tools are numbered 1.. in that order; else (the user's
+// table) the new tools are numbered on from its largest number. Returns how
+// many tools went before the table's own.
+int add_operation_tools(ToolTable& table, std::vector<std::uint32_t> operations, const PlanOptions& options, bool renumber) {
   std::sort(operations.begin(), operations.end());
   operations.erase(std::unique(operations.begin(), operations.end()), operations.end());
-  if (operations.empty()) return;
+  if (operations.empty()) return 0;
   std::stable_sort(operations.begin(), operations.end(), [&](std::uint32_t a, std::uint32_t b) {
     const OperationSpec& x = options.operations.at(a - 1);
     const OperationSpec& y = options.operations.at(b - 1);
@@ -327,14 +332,21 @@ void append_operation_tools(ToolTable& table, std::vector<std::uint32_t> operati
   });
   int number = 0;
   for (const ToolTableEntry& e : table.entries) number = std::max(number, e.tool.number);
+  std::vector<ToolTableEntry> before, after;
   for (std::uint32_t k : operations) {
     ToolTableEntry e;
     e.tool = operation_tool(options.operations.at(k - 1), options.material, options.machine);
     e.tool.number = ++number;
     e.operation = k;
     e.min_hole_mm = e.max_hole_mm = e.tool.diameter_mm;
-    table.entries.push_back(e);
+    (e.tool.operation < gcode::Operation::Drill ? before : after).push_back(e);
   }
+  table.entries.insert(table.entries.begin(), before.begin(), before.end());
+  table.entries.insert(table.entries.end(), after.begin(), after.end());
+  if (renumber) {
+    for (std::size_t t = 0; t < table.entries.size(); ++t) table.entries[t].tool.number = static_cast<int>(t) + 1;
+  }
+  return static_cast<int>(before.size());
 }
 
 }  // namespace
@@ -365,6 +377,7 @@ PlanResult group_holes(const aco::HoleSet& holes, const PlanOptions& options, co
 
   ToolTable table;
   PlanResult result;
+  std::map<std::uint32_t, std::size_t> op_entry;  // operation k -> the table entry that makes it (not apart)
   const bool apart = options.keep_sources_apart && !options.hole_source.empty();
   if (options.tooling.owned() && options.tools) {
     throw UserError(source, 0, "--drills and --end-mill plan the tools you own; a --tools table names its own, drop one of them");
@@ -380,14 +393,16 @@ PlanResult group_holes(const aco::HoleSet& holes, const PlanOptions& options, co
       else operations.push_back(h.operation);
     }
     ToolTable t;
+    std::vector<DrillMapping> mapping;
     if (!options.tooling.owned()) {
       t = generate_tool_table(drilled, options.material, options.thickness_mm, m);
     } else {
-      std::vector<DrillMapping> mapping;
       t = owned_tool_table(drilled, options.tooling, options.material, options.thickness_mm, m, source, mapping);
-      result.drill_map.insert(result.drill_map.end(), mapping.begin(), mapping.end());
     }
-    append_operation_tools(t, operations, options);
+    // Spot drills first: the drills' numbers move on by as many.
+    const int spots = add_operation_tools(t, operations, options, true);
+    for (DrillMapping& d : mapping) d.tool += spots;
+    result.drill_map.insert(result.drill_map.end(), mapping.begin(), mapping.end());
     return t;
   };
   if (apart) {
@@ -415,13 +430,70 @@ PlanResult group_holes(const aco::HoleSet& holes, const PlanOptions& options, co
   } else if (options.tools) {
     table = *options.tools;
     complete_tool_table(table, options.material, options.thickness_mm, m);
-    std::vector<std::uint32_t> operations;
+    // Issue 82: an operation is made by the table's tool of its kind and
+    // diameter (a tap of its pitch, where the entry gives one), completed
+    // from the operation's defaults; one the table has no tool for gets a
+    // generated one, numbered on from the table's.
+    std::set<std::uint32_t> used;
     for (const aco::Hole& h : holes) {
-      if (h.operation != 0) operations.push_back(h.operation);
+      if (h.operation != 0) used.insert(h.operation);
     }
-    append_operation_tools(table, operations, options);
+    std::vector<std::uint32_t> generated;
+    std::map<std::size_t, std::uint32_t> completed_for;  // table entry -> the operation it was completed from
+    for (std::uint32_t k : used) {
+      const OperationSpec& spec = options.operations.at(k - 1);
+      std::size_t found = table.entries.size();
+      for (std::size_t t = 0; t < table.entries.size() && found == table.entries.size(); ++t) {
+        const ToolTableEntry& e = table.entries[t];
+        if (e.tool.operation != spec.kind || e.operation != 0 || !e.takes(spec.diameter_mm)) continue;
+        if (spec.kind == gcode::Operation::Tap && e.tool.pitch_mm > 0 && std::fabs(e.tool.pitch_mm - spec.pitch_mm) > 1e-6) continue;
+        if (spec.kind == gcode::Operation::Tap && e.has_cycle && (e.tool.cycle == gcode::Cycle::G74) != spec.left_hand) continue;
+        found = t;
+      }
+      if (found == table.entries.size()) {
+        generated.push_back(k);
+        continue;
+      }
+      ToolTableEntry& e = table.entries[found];
+      const gcode::Tool d = operation_tool(spec, options.material, m);
+      auto [first, fresh] = completed_for.emplace(found, k);
+      if (!fresh && !e.has_depth && std::fabs(options.operations.at(first->second - 1).depth_mm - spec.depth_mm) > 1e-9) {
+        throw UserError(source, 0, "tool T" + std::to_string(e.tool.number) + " (" + gcode::to_string(spec.kind) +
+                                       ") would make holes of two depths: give it \"depth_mm\", or each depth a tool of its own");
+      }
+      if (fresh) {
+        if (!e.has_rpm) e.tool.spindle_rpm = d.spindle_rpm;
+        if (!e.has_feed || spec.kind == gcode::Operation::Tap) e.tool.feed_mm_min = spec.pitch_mm > 0 ? spec.pitch_mm * e.tool.spindle_rpm : d.feed_mm_min;
+        if (!e.has_depth) e.tool.depth_mm = d.depth_mm;
+        if (!e.has_cycle) e.tool.cycle = d.cycle, e.tool.dwell_s = d.dwell_s;
+        if (e.tool.pitch_mm == 0) e.tool.pitch_mm = spec.pitch_mm;
+        if (e.tool.angle_deg == 0) e.tool.angle_deg = spec.angle_deg;
+        if (e.tool.thread.empty()) e.tool.thread = spec.thread;
+      }
+      op_entry[k] = found;
+    }
+    add_operation_tools(table, generated, options, false);
+    for (std::size_t t = 0; t < table.entries.size(); ++t) {
+      if (table.entries[t].operation != 0) op_entry[table.entries[t].operation] = t;
+    }
+    // Made in the order a hole's operations come, whatever order the table lists them in.
+    std::vector<std::size_t> order(table.entries.size());
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+      return table.entries[a].tool.operation < table.entries[b].tool.operation;
+    });
+    std::vector<std::size_t> moved_to(order.size());
+    ToolTable sorted = table;
+    for (std::size_t q = 0; q < order.size(); ++q) sorted.entries[q] = table.entries[order[q]], moved_to[order[q]] = q;
+    table = std::move(sorted);
+    for (auto& [k, t] : op_entry) t = moved_to[t];
   } else {
     table = tools_for(holes);
+  }
+  if (op_entry.empty()) {
+    for (std::size_t t = 0; t < table.entries.size(); ++t) {
+      if (table.entries[t].operation != 0) op_entry[table.entries[t].operation] = t;
+    }
   }
   result.groups.resize(table.entries.size());
   std::vector<std::string> unfit;
@@ -440,10 +512,14 @@ PlanResult group_holes(const aco::HoleSet& holes, const PlanOptions& options, co
       result.groups[chosen].input_order.push_back(static_cast<aco::HoleIndex>(i));
       continue;
     }
-    for (std::size_t t = 0; t < table.entries.size(); ++t) {
+    if (holes[i].operation != 0 && !apart) {
+      auto it = op_entry.find(holes[i].operation);
+      if (it != op_entry.end()) chosen = it->second;
+    }
+    for (std::size_t t = 0; t < table.entries.size() && chosen == table.entries.size(); ++t) {
       if (table.entries[t].source >= 0 && static_cast<std::uint32_t>(table.entries[t].source) != options.hole_source[i]) continue;
       if (table.entries[t].operation != holes[i].operation) continue;
-      if (table.entries[t].operation != 0 || table.entries[t].takes(d)) {
+      if (table.entries[t].operation != 0 || (table.entries[t].tool.operation == gcode::Operation::Drill && table.entries[t].takes(d))) {
         chosen = t;
         break;
       }

@@ -57,9 +57,21 @@ ToolTable parse_tool_table(const std::string& text, const std::string& path) {
     tool.max_hits = static_cast<int>(hits);
     if (e.contains("cycle")) {
       auto c = e["cycle"].is_string() ? gcode::cycle_from_string(e["cycle"].get<std::string>()) : std::nullopt;
-      if (!c) throw UserError(where, 0, "\"cycle\" must be one of G81, G82, G83, G73");
+      if (!c) throw UserError(where, 0, "\"cycle\" must be one of G81, G82, G83, G73, G84, G74, G85");
       tool.cycle = *c;
     }
+    if (e.contains("operation")) {
+      // Issue 82: a tool of a hole feature's operation (a tap, a countersink, ...).
+      auto op = e["operation"].is_string() ? gcode::operation_from_string(e["operation"].get<std::string>()) : std::nullopt;
+      if (!op) throw UserError(where, 0, "\"operation\" must be one of spot, drill, ream, countersink, counterbore, tap");
+      tool.operation = *op;
+    }
+    tool.pitch_mm = json_number(e, "pitch_mm", 0, where);
+    tool.angle_deg = json_number(e, "angle_deg", 0, where);
+    if (tool.pitch_mm < 0 || (tool.pitch_mm > 0 && tool.operation != gcode::Operation::Tap)) {
+      throw UserError(where, 0, "\"pitch_mm\" is a tap's (\"operation\": \"tap\"), and positive");
+    }
+    if (!(tool.angle_deg >= 0 && tool.angle_deg < 180)) throw UserError(where, 0, "\"angle_deg\" must be below 180");
     entry.min_hole_mm = json_number(e, "min_hole_mm", tool.diameter_mm - 0.0005, where);
     entry.max_hole_mm = json_number(e, "max_hole_mm", tool.diameter_mm + 0.0005, where);
     if (tool.number < 1 || tool.number > 200) throw UserError(where, 0, "tool numbers are 1..200");
@@ -231,6 +243,9 @@ ToolTable owned_tool_table(const aco::HoleSet& holes, const Tooling& tooling, Ma
 void complete_tool_table(ToolTable& table, Material material, double thickness_mm, const Machine& machine) {
   for (ToolTableEntry& e : table.entries) {
     if (e.has_rpm && e.has_feed && e.has_depth && e.has_cycle) continue;
+    // An operation's tool (a tap, a countersink, ...) is completed from the
+    // operation it is given (plan.cpp: the operation's own defaults).
+    if (e.tool.operation != gcode::Operation::Drill) continue;
     const gcode::Tool g = generated_drill(e.tool.diameter_mm, material, thickness_mm, machine);
     if (!e.has_rpm) e.tool.spindle_rpm = g.spindle_rpm;
     if (!e.has_feed) e.tool.feed_mm_min = g.feed_mm_min;

@@ -28,6 +28,7 @@
 
 #include "aco/geometry.h"
 #include "dxf/reader.h"
+#include "formats/processes.h"
 
 namespace formats {
 
@@ -58,6 +59,7 @@ struct HoleFeature {
   bool inch = false;               // drawn in inches: inch standards first (threads, an 82 degree countersink)
   std::string evidence;            // why: "arc 270 deg, line 812", "layer CBORE", "callout, line 90"
   std::uint32_t line = 0;          // the hole's CIRCLE
+  std::uint32_t rule = 0;          // the process table's rule that gives its operations (1-based; 0: the defaults)
 };
 
 struct FeatureNote {
@@ -75,8 +77,24 @@ struct RecognizedFeatures {
 // `circles`: the drawing's holes as read (duplicates removed, filters
 // applied); `unit_mm`: millimetres per drawing unit (callouts' numbers are
 // in it; 25.4 makes an inch drawing, whose threads are matched inch first).
+// `processes`: a process table (--processes), whose first rule that selects
+// a feature decides before the layer and the callout (HoleFeature::rule).
 RecognizedFeatures recognize_features(const aco::HoleSet& circles, const std::vector<dxf::DrawnArc>& arcs,
-                                      const std::vector<dxf::DrawnText>& texts, double unit_mm);
+                                      const std::vector<dxf::DrawnText>& texts, double unit_mm,
+                                      const ProcessTable* processes = nullptr);
+
+// A hole list's feature (issue 82): CSV columns, XML map attributes, in mm
+// (0 or empty: not given).
+struct ListedFeature {
+  std::string thread;  // "M6", "1/4-20 UNC"
+  double counterbore_mm = 0.0, counterbore_depth_mm = 0.0, countersink_mm = 0.0, countersink_angle_deg = 0.0;
+};
+// The feature of `hole` as listed: a thread taps it (`hole` then drilled at
+// its tap drill), a counterbore or countersink diameter makes one, nothing a
+// plain hole; matched to the process table's rules. Throws InputError (file
+// `path`, the hole's line) for what contradicts or names no standard thread.
+HoleFeature listed_feature(aco::Hole& hole, const ListedFeature& given, bool inch, const ProcessTable* processes,
+                           const std::string& path);
 
 // A hole callout's text as read: a DXF's MTEXT codes, %%c, the GD&T font's
 // letters and the Unicode symbols made one plain form ("Ø3.4 THRU ⌴ Ø6.5 ↧ 3.0"

@@ -21,6 +21,7 @@
 #include "aco/problem.h"
 #include "dxf/reader.h"
 #include "formats/features.h"
+#include "formats/processes.h"
 #include "gcode/drilling.h"
 
 namespace formats {
@@ -79,6 +80,8 @@ struct InputOptions {
   // features (formats/features.h); true: every circle a hole of its own, as
   // before (--concentric separate).
   bool concentric_separate = false;
+  // Issue 82: --processes, shared by every input of a job (null: none).
+  std::shared_ptr<const ProcessTable> processes;
 };
 
 struct Note {

@@ -53,6 +53,7 @@ struct InputSettings {
   double round_tolerance_pct = 2.5;
   std::string dxf_units;  // mm | cm | m | inch | feet; empty: the DXF's header
   std::string concentric = "features";  // features | separate (issue 82)
+  std::optional<NamedText> processes;    // a process table (JSON, issue 82)
 };
 
 // The tools on the bench and the side of the board (--drills, --end-mill, --side, ...).
@@ -94,6 +95,8 @@ struct PlanSettings {
   std::size_t resume_from = 1;
   int program_number = 1001;
   std::optional<double> probe_plate_mm;
+  // Issue 82: spot every drilled hole first (or the machine profile's "spot").
+  bool spot = false;
   // The program's name as the report gives it ("-": standard output).
   std::string program_name = "-";
   Wanted wanted;

@@ -20,8 +20,13 @@ namespace job {
 // may be drilled by an owned drill that fits it, and one milled by a helix
 // counts as a hole of 2r + the end mill's diameter (within 0.01 mm) at the
 // helix's centre.
+// Hole features (issue 82): a hole whose aco::Hole::operation is k > 0 is
+// made by operation_kinds[k - 1] at its hole's place, with a tool of its
+// diameter; the operations at one place come in their order (spot, drill,
+// ream, countersink or counterbore, tap).
 std::vector<std::string> check_drilled(const gcode::Interpretation& run, const aco::HoleSet& expected,
-                                       const planning::Tooling& tooling = {});
+                                       const planning::Tooling& tooling = {},
+                                       const std::vector<gcode::Operation>& operation_kinds = {});
 // Within this of the designed diameter, a milled hole is made to size.
 constexpr double kMilledToleranceMm = 0.01;
 
@@ -39,7 +44,8 @@ std::vector<std::string> check_same_holes(const gcode::Interpretation& run, cons
 // A tool table's tools make the holes in their [min, max] range, as plan chose them.
 planning::Tooling tooling_of_table(const planning::ToolTable& table);
 std::vector<std::string> self_check(const std::string& program_text, const aco::HoleSet& expected,
-                                    const planning::Tooling& tooling);
+                                    const planning::Tooling& tooling,
+                                    const std::vector<gcode::Operation>& operation_kinds = {});
 std::vector<std::string> self_check(const std::string& program_text, const gcode::DrillingProgram& input);
 
 }  // namespace job

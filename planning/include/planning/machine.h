@@ -42,6 +42,8 @@ struct Machine {
   double rapid_z_mm_min = 25400.0;
   double accel_mm_s2 = 2500.0;       // per axis
   bool linear_rapids = false;        // HAAS G00 moves each axis at its own rate ("dogleg")
+  // Issue 82: this shop spots every drilled hole first (as --spot).
+  bool spot = false;
   // How fast the control takes a corner (GRBL $11: the junction deviation;
   // GRBL's default 0.01 mm where the profile says none) and how finely it
   // cuts arcs into chords ($12, default 0.002 mm): issue 66's time model.

@@ -25,12 +25,14 @@
  * hand), and counterbores are not made (no end-mill counterboring yet).
  */
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "aco/geometry.h"
 #include "formats/features.h"
 #include "formats/holes.h"
+#include "formats/processes.h"
 #include "gcode/program.h"
 #include "planning/machine.h"
 #include "planning/tools.h"
@@ -46,6 +48,11 @@ struct OperationSpec {
   double pitch_mm = 0.0;     // tap
   double angle_deg = 0.0;    // countersink
   std::string thread;        // tap: "M3"
+  bool left_hand = false;    // tap: G74
+  // A process table's cutting data and name for the tool (unset: the defaults).
+  std::optional<int> rpm;
+  std::optional<double> feed_mm_min, dwell_s;
+  std::string name;
 };
 
 struct OperationSettings {
@@ -53,6 +60,13 @@ struct OperationSettings {
   double thickness_mm = 6.35;
   bool can_tap = true;        // the dialect has canned cycles (G84)
   bool can_counterbore = true;
+  // --spot: every drilled hole is spotted first, with one 90-degree spot
+  // drill, to a cone the diameter of the smallest spotted hole (a spot no
+  // wider than any of its holes: it centres the drill and leaves no chamfer).
+  bool spot = false;
+  // --processes: the rules features were matched to (HoleFeature::rule);
+  // without features (Excellon, CSV, ...), each hole is matched as plain.
+  const formats::ProcessTable* processes = nullptr;
 };
 
 struct Operations {
@@ -74,6 +88,10 @@ Operations add_operations(aco::HoleSet& holes, std::vector<std::uint32_t>& hole_
 // The tool that makes an operation, for the job's material and machine
 // (number 1; group_holes numbers them after the drills).
 gcode::Tool operation_tool(const OperationSpec& spec, Material material, const Machine& machine);
+
+// Reads a process table (formats/processes.h); what it cannot read is one
+// formats::InputError naming `path` and the rule's line.
+formats::ProcessTable parse_process_table(const std::string& text, const std::string& path);
 
 // ISO 4762 / DIN 974-1: the depth of the counterbore of that diameter for a
 // socket head cap screw, or 0 where the table has none.
