@@ -68,7 +68,7 @@ async function fresh(context) {
   // Every control interface.md names is there, by its accessible name.
   for (const label of ['Input files', 'Random holes', 'Machine', 'Dialect', 'Units', 'Origin', 'Material', 'Thickness',
                        'Drills owned', 'End mill', 'Touch plate', 'Side', 'Alignment pins', 'Time limit', 'Iterations',
-                       'Seed', 'Algorithm', 'Alpha', 'Beta', 'Ants']) {
+                       'Seed', 'Algorithm', 'Alpha', 'Beta', 'Ants', 'Processes']) {
     check(await page.getByLabel(label, { exact: true }).count() === 1, 'control "' + label + '"');
   }
   for (const name of ['Sample plate', 'Random plate', 'Plan', 'Stop', 'Save program', 'Save report', 'Save setup sheet',
@@ -88,6 +88,27 @@ async function fresh(context) {
   check(saved.bytes.equals(cli([plate], ['--iterations', '40', '--seed', '3'])), 'DXF: the program is acodrill plan\'s, byte for byte');
   const holesText = await page.getByRole('region', { name: 'Holes' }).textContent();
   check(holesText.includes('70 holes'), 'the holes region tells the holes: ' + holesText.slice(0, 60));
+
+  // 1b. Hole features with a process table (issue 82): the build plate drawn
+  // without its callout, its counterbores and left-hand taps from the table;
+  // the program is acodrill plan's with --processes, and the holes region
+  // says what the features are and draws them with a legend.
+  const drawing = path.join(root, 'tests', 'data', 'dxf-features', 'build_plate_no_callout.dxf');
+  const shop = path.join(work, 'shop.json');
+  fs.writeFileSync(shop, JSON.stringify({ processes: [
+    { kind: 'undecided', diameter_mm: [3.3, 3.5], operations: ['spot', 'drill', { operation: 'counterbore', depth_mm: 3.0 }] },
+    { thread: 'M3', operations: ['drill', { operation: 'tap', hand: 'left' }] }] }));
+  await page.getByLabel('Processes', { exact: true }).setInputFiles(shop);
+  await page.getByLabel('Input files', { exact: true }).setInputFiles(drawing);
+  await fill(page, { Iterations: '20', Seed: '3' });
+  saved = await planAndSave(page);
+  check(saved.bytes.equals(cli([drawing], ['--processes', shop, '--iterations', '20', '--seed', '3'])),
+        'a process table: the program is acodrill plan\'s with --processes, byte for byte');
+  check(saved.bytes.toString().includes('G74 X'), 'the left-hand taps are in it');
+  const featuresText = await page.getByRole('region', { name: 'Holes' }).textContent();
+  check(/hole features: 2 tapped \(M3\), 4 counterbored/.test(featuresText) && featuresText.includes('Legend:'),
+        'the holes region names the features and has a legend: ' + featuresText.slice(0, 200));
+  await page.getByLabel('Processes', { exact: true }).setInputFiles([]);
 
   // 2. A KiCad Excellon file on the router, with drills owned and an end mill.
   const drl = path.join(root, 'tests', 'data', 'kicad', 'video-mm-decimal.drl');

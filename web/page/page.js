@@ -23,6 +23,7 @@
     ['probe_plate', 'Touch plate', 'number', 'mm', 'Thickness of a touch plate: after each tool change GRBL, Marlin and LinuxCNC programs probe Z on it.'],
     ['side', 'Side', 'select', [['front', 'front'], ['back', 'back (mirrored)']], 'Drill the board from its back: the holes mirrored about the vertical line through their centre.'],
     ['alignment_pins', 'Alignment pins', 'number', 'mm', 'Two pin holes of this diameter on the mirror line, drilled first, to register the board when it is turned over.'],
+    ['processes', 'Processes', 'file', '.json', 'A process table (JSON, as --processes): which hole features of a drawing are spotted, drilled, reamed, countersunk, counterbored or tapped, and with what.'],
     ['panel', 'Panel', 'text', 'e.g. 3x2', 'Drill copies of the board as one job: COLSxROWS, with the pitch.'],
     ['pitch', 'Pitch', 'text', 'e.g. 60,40', 'DX,DY in mm between panel copies.'],
     ['time_limit', 'Time limit', 'number', 'seconds', 'Stop the colony after this many seconds (empty: it stops by itself).'],
@@ -54,6 +55,17 @@
           o.textContent = text;
           input.appendChild(o);
         }
+      } else if (kind === 'file') {
+        // A file's text, read when chosen: the settings hold its name and text.
+        input = document.createElement('input');
+        input.type = 'file';
+        input.accept = choices;
+        input.addEventListener('change', async (e) => {
+          e.stopPropagation();
+          const f = input.files[0];
+          fileSettings[key] = f ? { name: f.name, text: await f.text() } : null;
+          if (files.length && $('stop').disabled) preview();
+        });
       } else {
         input = document.createElement('input');
         input.type = kind === 'number' ? 'number' : 'text';
@@ -72,19 +84,25 @@
     }
   }
 
+  const fileSettings = {};  // key -> {name, text} of a file setting chosen
   function settings() {
     const s = {};
-    for (const [key] of SETTINGS) s[key] = $('set-' + key).value.trim();
+    for (const [key, , kind] of SETTINGS) {
+      if (kind !== 'file') s[key] = $('set-' + key).value.trim();
+      else if (fileSettings[key]) s[key] = fileSettings[key].text, s[key + '_name'] = fileSettings[key].name;
+    }
     return s;
   }
   function saveSettings() {
-    try { localStorage.setItem(STORE, JSON.stringify(settings())); } catch (e) { /* storage off: settings last this visit */ }
+    const kept = settings();
+    for (const [key, , kind] of SETTINGS) if (kind === 'file') delete kept[key], delete kept[key + '_name'];
+    try { localStorage.setItem(STORE, JSON.stringify(kept)); } catch (e) { /* storage off: settings last this visit */ }
   }
   function loadSettings() {
     let s = null;
     try { s = JSON.parse(localStorage.getItem(STORE) || 'null'); } catch (e) { s = null; }
     if (!s) return;
-    for (const [key] of SETTINGS) if (typeof s[key] === 'string') $('set-' + key).value = s[key];
+    for (const [key, , kind] of SETTINGS) if (kind !== 'file' && typeof s[key] === 'string') $('set-' + key).value = s[key];
   }
 
   // --- the worker -------------------------------------------------------
@@ -169,7 +187,7 @@
       routes = null;
       drawHoles();
       describeHoles();
-      status(msg.planning ? 'Planning\u2026' : 'Read ' + view.holes.length / 3 + ' holes.');
+      status(msg.planning ? 'Planning\u2026' : 'Read ' + (view.holes.length / 3 - operationsOf(view)) + ' holes.');
       return;
     }
     if (msg.cmd === 'progress' && msg.id === planId) {
@@ -294,12 +312,32 @@
       g.globalAlpha = 1;
     }
     const n = xyd.length / 3;
+    // Holes drilled are discs; a hole feature's other operations (issue 82)
+    // are drawn over them as a drawing shows them: a counterbore or a reamer
+    // a ring, a countersink a dashed ring, a tap three quarters of a ring, a
+    // spot a small cross.
+    const opOf = (i) => (v.tools.length && v.tools[toolOf[i]].operation) || 'drill';
     for (let i = 0; i < n; i++) {
+      if (opOf(i) !== 'drill') continue;
       const r = Math.max(1, 0.5 * xyd[3 * i + 2] * f.k);
       g.fillStyle = v.tools.length ? COLOURS[toolOf[i] % COLOURS.length] : '#333';
       if (n > 20000 || r < 2) g.fillRect(f.X(xyd[3 * i]) - r, f.Y(xyd[3 * i + 1]) - r, 2 * r, 2 * r);
       else { g.beginPath(); g.arc(f.X(xyd[3 * i]), f.Y(xyd[3 * i + 1]), r, 0, 2 * Math.PI); g.fill(); }
     }
+    g.lineWidth = 1.5;
+    for (let i = 0; i < n; i++) {
+      const op = opOf(i);
+      if (op === 'drill') continue;
+      const x = f.X(xyd[3 * i]), y = f.Y(xyd[3 * i + 1]), r = Math.max(2, 0.5 * xyd[3 * i + 2] * f.k);
+      g.strokeStyle = COLOURS[toolOf[i] % COLOURS.length];
+      g.setLineDash(op === 'countersink' ? [3, 2] : []);
+      g.beginPath();
+      if (op === 'spot') { g.moveTo(x - 3, y); g.lineTo(x + 3, y); g.moveTo(x, y - 3); g.lineTo(x, y + 3); }
+      else if (op === 'tap') g.arc(x, y, r, 0, 1.5 * Math.PI);
+      else g.arc(x, y, r, 0, 2 * Math.PI);
+      g.stroke();
+    }
+    g.setLineDash([]);
   }
   function drawHoles() { draw($('holes-canvas'), view, routes); }
 
@@ -317,18 +355,32 @@
     }
     return t;
   }
+  // A hole feature's operations other than its drill (taps, counterbores, ...): holes of the view that are no holes to a user.
+  function operationsOf(v) { return v.tools.reduce((n, t) => n + ((t.operation || 'drill') !== 'drill' ? t.holes.length : 0), 0); }
   function describeHoles() {
     const box = $('holes-info');
     box.textContent = '';
     if (!view) return;
     const e = view.extent;
-    box.appendChild(text('p', view.holes.length / 3 + ' holes, ' + view.tools.length + ' tool(s); holes X ' + e[0].toFixed(3) +
+    const operations = operationsOf(view);
+    box.appendChild(text('p', (view.holes.length / 3 - operations) + ' holes' + (operations ? ' and ' + operations + ' operations at them' : '') +
+      ', ' + view.tools.length + ' tool(s); holes X ' + e[0].toFixed(3) +
       '..' + e[2].toFixed(3) + ', Y ' + e[1].toFixed(3) + '..' + e[3].toFixed(3) + ' mm (program coordinates)'));
     box.appendChild(table(['Tool', 'Diameter mm', 'Holes'], view.tools.map((t) => [t.name || ('T' + t.number),
       t.diameter_mm.toFixed(3) + (t.end_mill ? ' end mill' : ''), String(t.holes.length)]), 'Tools (colours as drawn)'));
+    const ops = new Set(view.tools.map((t) => t.operation || 'drill'));
+    if (ops.size > 1 || !ops.has('drill')) {
+      const legend = {
+        drill: 'disc: drilled', spot: 'cross: spotted', ream: 'ring: reamed', countersink: 'dashed ring: countersunk',
+        counterbore: 'ring: counterbored', tap: 'three-quarter ring: tapped (as a drawing shows a thread)',
+      };
+      const p = text('p', 'Legend: ' + ['drill', 'spot', 'ream', 'countersink', 'counterbore', 'tap'].filter((k) => ops.has(k)).map((k) => legend[k]).join('; ') + '.');
+      p.id = 'holes-legend';
+      box.appendChild(p);
+    }
     const notes = [];
     for (const i of view.inputs) {
-      notes.push(i.file + ': ' + i.holes + ' holes from ' + i.format);
+      notes.push(i.file + ': ' + i.holes + ' holes from ' + i.format + (i.features ? '; hole features: ' + i.features : ''));
       for (const a of i.assumptions) notes.push(i.file + ': assumed ' + a);
       for (const w of i.warnings) notes.push(i.file + (w.line ? ':' + w.line : '') + ': warning: ' + w.what);
       for (const s of i.not_drilled) notes.push(i.file + (s.line ? ':' + s.line : '') + ': not made: ' + s.what);
@@ -405,7 +457,7 @@
   $('settings').addEventListener('change', () => { saveSettings(); if (files.length && $('stop').disabled) preview(); });
   $('reset').addEventListener('click', () => {
     try { localStorage.removeItem(STORE); } catch (e) { /* nothing kept */ }
-    for (const [key] of SETTINGS) { const el = $('set-' + key); el.value = el.tagName === 'SELECT' ? el.options[0].value : ''; }
+    for (const [key] of SETTINGS) { const el = $('set-' + key); el.value = el.tagName === 'SELECT' ? el.options[0].value : ''; fileSettings[key] = null; }
     preview();
   });
   $('files').addEventListener('change', async (e) => {

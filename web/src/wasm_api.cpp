@@ -71,6 +71,11 @@ job::PlanSettings settings_of(const json& j) {
   text("local_search", s.solver.local_search);
   if (s.solver.local_search.empty()) s.solver.local_search = "auto";
   text("program_name", s.program_name);
+  if (j.contains("processes") && j["processes"].is_string() && !j["processes"].get<std::string>().empty()) {
+    std::string name = "processes.json";
+    text("processes_name", name);
+    s.input.processes = job::NamedText{name, j["processes"].get<std::string>()};
+  }
   s.thickness_mm = number("thickness");
   s.default_diameter_mm = number("default_diameter");
   s.bench.end_mill_mm = number("end_mill");
@@ -113,6 +118,7 @@ json holes_of(const job::Result& r) {
                      {"name", gcode::tool_name(g.tool)},
                      {"diameter_mm", g.tool.diameter_mm},
                      {"end_mill", g.tool.end_mill},
+                     {"operation", gcode::to_string(g.tool.operation)},
                      {"holes", g.input_order}});
   }
   json inputs = json::array();
