@@ -32,6 +32,12 @@ inline json parse_json_text(const std::string& text, const std::string& path) {
     std::string what = e.what();
     if (auto p = what.find("parse error"); p != std::string::npos) what = what.substr(p);
     throw UserError(path, line, "invalid JSON: " + what);
+  } catch (const json::exception& e) {
+    // A number too large for a double (out_of_range 406): the reader gives
+    // no position for it. Found by the process table's fuzz target.
+    std::string what = e.what();
+    if (auto p = what.find("] "); p != std::string::npos) what = what.substr(p + 2);
+    throw UserError(path, 0, "invalid JSON: " + what);
   }
 }
 
