@@ -540,6 +540,27 @@ TEST(features_test, csv_and_xml_hole_lists_carry_features) {
   EXPECT_THAT(bad.err, ::testing::HasSubstr(t / "bad.csv" + ":2: thread \"M9x3\" is no standard thread"));
 }
 
+// The setup sheet counts holes and the operations at them apart, and its map
+// (and the route SVG) draws a counterbore as a ring and a tap as three
+// quarters of one, over the drilled discs.
+TEST(features_test, the_setup_sheet_and_the_route_draw_the_features) {
+  testutil::TempDir t;
+  auto r = acodrill_run("plan " + shell_quote(drawing("build_plate")) + " -o " + t / "p.nc" + " --iterations 5 -q --setup-sheet " +
+                        t / "sheet.html" + " --svg " + t / "route.svg");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::string sheet = slurp(t / "sheet.html");
+  EXPECT_THAT(sheet, ::testing::HasSubstr("6 and 6 operations at them / 4"));
+  const std::string svg = slurp(t / "route.svg");
+  auto count = [](const std::string& text, const std::regex& re) {
+    return std::distance(std::sregex_iterator(text.begin(), text.end(), re), std::sregex_iterator());
+  };
+  // The group of the counterbores: unfilled, 4 circles; the taps': 2 arcs of 270 degrees.
+  std::smatch bores;
+  ASSERT_TRUE(std::regex_search(svg, bores, std::regex(R"(<g fill="none" stroke="[^"]+" stroke-width="1.5">\n((?:<circle[^\n]*\n)+)</g>)")));
+  EXPECT_EQ(count(bores[1].str(), std::regex("<circle")), 4);
+  EXPECT_EQ(count(svg, std::regex(R"(<path d="M[-0-9.]+ [-0-9.]+A[0-9.]+ [0-9.]+ 0 1 1 )")), 2);
+}
+
 // verify checks the order of each feature's operations: the same program
 // with its taps moved before the drills makes every hole with the right tool
 // and is still wrong, naming both lines.

@@ -1,5 +1,7 @@
 #include "job/setup_sheet.h"
 
+#include <algorithm>
+
 #include <sstream>
 
 #include "job/svg.h"
@@ -28,6 +30,9 @@ std::string setup_sheet_html(const aco::HoleSet& holes, const PlanResult& plan, 
   auto len = [&](double mm) { return gcode::format_number(inch ? mm / kMmPerInch : mm, inch ? 4 : 3); };
   auto feed = [&](double mm_min) { return gcode::format_number(inch ? mm_min / kMmPerInch : mm_min, inch ? 2 : 1); };
   const Placement& pl = ctx.placement;
+  // Issue 82: a hole feature's other operations are no holes to the operator.
+  const auto operations = static_cast<std::size_t>(
+      std::count_if(holes.begin(), holes.end(), [](const aco::Hole& h) { return h.operation != 0; }));
   const Extent& e = pl.extent;
   auto esc = [](const std::string& s) { return xml_escape(s); };
 
@@ -55,8 +60,9 @@ std::string setup_sheet_html(const aco::HoleSet& holes, const PlanResult& plan, 
     << esc(ctx.program == "-" ? std::string("standard output") : ctx.program) << "</td></tr>\n"
     << "<tr><th>Dialect</th><td>" << gcode::to_string(ps.dialect) << "</td><th>Units</th><td>" << (inch ? "inch (G20)" : "mm (G21)")
     << "</td></tr>\n"
-    << "<tr><th>Machine</th><td>" << esc(options.machine.name) << "</td><th>Holes / tools</th><td>" << holes.size() << " / "
-    << plan.groups.size() << "</td></tr>\n"
+    << "<tr><th>Machine</th><td>" << esc(options.machine.name) << "</td><th>Holes / tools</th><td>" << holes.size() - operations
+    << (operations ? " and " + std::to_string(operations) + " operations at them" : std::string()) << " / " << plan.groups.size()
+    << "</td></tr>\n"
     << "</table>\n";
   // Several files, one job; a panel of copies.
   if (ctx.sources.size() > 1) {

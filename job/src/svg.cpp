@@ -81,13 +81,30 @@ void panel(std::ostringstream& out, const aco::HoleSet& holes, const PlanResult&
   const aco::Point2 home = options.machine.start;
   out << "<polyline fill=\"none\" stroke=\"#888888\" stroke-width=\"1\" stroke-dasharray=\"4 3\" points=\"" << num(X(at.x))
       << "," << num(Y(at.y)) << " " << num(X(home.x)) << "," << num(Y(home.y)) << "\"/>\n";
-  // Holes to scale (at least a visible dot), coloured by tool.
+  // Holes to scale (at least a visible dot), coloured by tool. A hole
+  // feature's other operations (issue 82) as a drawing shows them, over the
+  // drilled holes: a counterbore or a reamer a ring, a countersink a dashed
+  // ring, a tap three quarters of a ring, a spot a small cross.
   for (std::size_t g = 0; g < plan.groups.size(); ++g) {
-    out << "<g fill=\"" << tool_colour(g) << "\" fill-opacity=\"0.55\" stroke=\"" << tool_colour(g) << "\">\n";
+    const gcode::Operation op = plan.groups[g].tool.operation;
+    if (op == gcode::Operation::Drill) {
+      out << "<g fill=\"" << tool_colour(g) << "\" fill-opacity=\"0.55\" stroke=\"" << tool_colour(g) << "\">\n";
+    } else {
+      out << "<g fill=\"none\" stroke=\"" << tool_colour(g) << "\" stroke-width=\"1.5\""
+          << (op == gcode::Operation::Countersink ? " stroke-dasharray=\"3 2\"" : "") << ">\n";
+    }
     for (aco::HoleIndex i : *orders[g]) {
       const aco::Hole& hole = holes[i];
-      out << "<circle cx=\"" << num(X(hole.center.x)) << "\" cy=\"" << num(Y(hole.center.y)) << "\" r=\""
-          << num(std::max(hole.diameter / 2 * scale, 1.5)) << "\"/>\n";
+      const double cx = X(hole.center.x), cy = Y(hole.center.y), r = std::max(hole.diameter / 2 * scale, 1.5);
+      if (op == gcode::Operation::Spot) {
+        out << "<path d=\"M" << num(cx - 3) << " " << num(cy) << "H" << num(cx + 3) << "M" << num(cx) << " " << num(cy - 3) << "V"
+            << num(cy + 3) << "\"/>\n";
+      } else if (op == gcode::Operation::Tap) {
+        out << "<path d=\"M" << num(cx + r) << " " << num(cy) << "A" << num(r) << " " << num(r) << " 0 1 1 " << num(cx) << " "
+            << num(cy - r) << "\"/>\n";
+      } else {
+        out << "<circle cx=\"" << num(cx) << "\" cy=\"" << num(cy) << "\" r=\"" << num(r) << "\"/>\n";
+      }
     }
     out << "</g>\n";
   }
