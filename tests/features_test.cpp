@@ -284,24 +284,44 @@ TEST(features_test, each_feature_is_drilled_then_tapped_counterbored_or_counters
 
 // GRBL and Marlin cannot tap: the holes are drilled at the tap drill and the
 // program ends with a pause that lists them; GRBL's own parser takes every
-// line; countersinks are plunged; counterbores are named, not made.
+// line; counterbores are milled by the end mill's helix (rs274 reads them to
+// size and depth), and without one the job is refused in one line.
 TEST(features_test, grbl_and_marlin_drill_the_tap_drill_and_end_with_the_taps_to_make_by_hand) {
   testutil::TempDir t;
   for (const std::string dialect : {"grbl", "marlin"}) {
+    SCOPED_TRACE(dialect);
     auto r = acodrill_run("plan " + shell_quote(drawing("build_plate")) + " -o " + t / "p.nc" + " --dialect " + dialect +
-                          " --iterations 10");
+                          " --iterations 10 --origin drawing --drills 2.5,3.4 --end-mill 3");
     ASSERT_EQ(r.code, 0) << r.err;
     const std::string program = slurp(t / "p.nc");
     EXPECT_EQ(program.find("G84"), std::string::npos);
     EXPECT_THAT(program, ::testing::HasSubstr("TAP M3 AT X"));
     EXPECT_THAT(program, ::testing::HasSubstr("TAP BY HAND"));
+    EXPECT_THAT(program, ::testing::HasSubstr("3.000 MM END MILL"));
     EXPECT_THAT(r.err, ::testing::HasSubstr("cannot tap: the program ends with a pause that lists them"));
-    EXPECT_THAT(r.err, ::testing::HasSubstr("counterbore(s) (D6.5 x4) not made: GRBL and Marlin"));
     if (dialect == "grbl") {
       EXPECT_EQ(oracles::grbl_refusal(program), "");
+      // The counterbores, milled by the 3 mm end mill's helix to 6.5 mm, 3.0 deep (the callout's).
+      const oracles::Canon canon = oracles::run_rs274(t / "p.nc");
+      std::size_t milled = 0;
+      for (const oracles::Made& m : canon.made) {
+        if (m.path_radius > 0) {
+          ++milled;
+          EXPECT_NEAR(2 * m.path_radius + 3.0, 6.5, 0.01);
+          EXPECT_NEAR(m.bottom, -3.0, 1e-6);
+        }
+      }
+      EXPECT_EQ(milled, 4u);
     }
-    auto v = acodrill_run("verify " + t / "p.nc" + " --holes " + shell_quote(drawing("build_plate")) + " -q");
+    auto v = acodrill_run("verify " + t / "p.nc" + " --holes " + shell_quote(drawing("build_plate")) + " --drills 2.5,3.4 --end-mill 3 -q");
     EXPECT_EQ(v.code, 0) << v.out;
+    // Without an end mill nothing can make the counterbores: one line, nothing written.
+    std::filesystem::remove(t / "p.nc");
+    auto refused = acodrill_run("plan " + shell_quote(drawing("build_plate")) + " -o " + t / "p.nc" + " --dialect " + dialect);
+    EXPECT_EQ(refused.code, 2);
+    EXPECT_EQ(testutil::count_lines(refused.err), 1) << refused.err;
+    EXPECT_THAT(refused.err, ::testing::HasSubstr("GRBL and Marlin programs mill counterbores with the end mill: give --end-mill DIA"));
+    EXPECT_FALSE(std::filesystem::exists(t / "p.nc"));
   }
 }
 
@@ -312,7 +332,8 @@ TEST(features_test, spot_spots_every_drilled_hole_first_with_one_tool) {
   testutil::TempDir t;
   for (const std::string dialect : {"haas", "linuxcnc", "grbl"}) {
     SCOPED_TRACE(dialect);
-    auto r = acodrill_run("plan " + shell_quote(drawing("build_plate")) + " -o " + t / "p.nc" + " --spot --origin drawing --iterations 5 -q --dialect " + dialect);
+    const std::string mill = dialect == "grbl" ? " --drills 2.5,3.4 --end-mill 3" : "";  // GRBL mills the counterbores
+    auto r = acodrill_run("plan " + shell_quote(drawing("build_plate")) + " -o " + t / "p.nc" + " --spot --origin drawing --iterations 5 -q --dialect " + dialect + mill);
     ASSERT_EQ(r.code, 0) << r.err;
     const std::string program = slurp(t / "p.nc");
     EXPECT_THAT(program, ::testing::HasSubstr("T1 D=6.000 MM - 90 DEG SPOT DRILL - 6 HOLES"));
@@ -333,7 +354,7 @@ TEST(features_test, spot_spots_every_drilled_hole_first_with_one_tool) {
     std::size_t spots = 0;
     for (const oracles::Made& m : canon.made) spots += m.tool == 1;
     EXPECT_EQ(spots, 6u);
-    auto v = acodrill_run("verify " + t / "p.nc" + " --holes " + shell_quote(drawing("build_plate")) + " --spot -q");
+    auto v = acodrill_run("verify " + t / "p.nc" + " --holes " + shell_quote(drawing("build_plate")) + " --spot -q" + mill);
     EXPECT_EQ(v.code, 0) << v.out;
   }
 }

@@ -214,8 +214,11 @@ int cmd_verify(const VerifyArgs& a, const InputArgs& in, bool quiet) {
     }
     const bool cycles = std::regex_search(code, canned);
     std::vector<std::uint32_t> no_sources;
-    planning::OperationSettings settings{planning::Material::Steel, 1e9, cycles, cycles};
+    planning::OperationSettings settings;
+    settings.thickness_mm = 1e9;
+    settings.can_tap = settings.can_counterbore = cycles;
     settings.spot = a.spot;
+    settings.end_mill_mm = a.bench.end_mill_mm;
     settings.processes = in_options.processes.get();
     const planning::Operations ops = planning::add_operations(expected.holes, no_sources, expected.features, settings, holes_path);
     for (const planning::OperationSpec& spec : ops.specs) operation_kinds.push_back(spec.kind);

@@ -230,6 +230,7 @@ std::string cycle_description(const Tool& t, Dialect d) {
 std::string tool_name(const Tool& t) {
   if (!t.name.empty()) return t.name;
   const std::string d = format_number(t.diameter_mm, 3);
+  if (t.end_mill) return d + " MM END MILL";  // whatever it mills: holes, slots, counterbores
   switch (t.operation) {
     case Operation::Tap: return comment_text(t.thread.empty() ? d + " MM" : t.thread) + " TAP" + (t.cycle == Cycle::G74 ? " LH" : "");
     case Operation::Countersink: return std::to_string(std::lround(t.angle_deg)) + " DEG COUNTERSINK TO D" + d;
@@ -238,7 +239,7 @@ std::string tool_name(const Tool& t) {
     case Operation::Ream: return d + " MM REAMER";
     case Operation::Drill: break;
   }
-  return d + (t.end_mill ? " MM END MILL" : " MM DRILL");
+  return d + " MM DRILL";
 }
 
 const char* to_string(Dialect d) {

@@ -5,6 +5,7 @@
 // program_job.cpp.
 #include "job/plan.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <map>
@@ -204,9 +205,13 @@ void PlanJob::Impl::prepare_holes() {
   // Issue 82: each hole feature's operations (taps, counterbores,
   // countersinks), holes of their own made by tools of their own.
   const bool canned = gcode::has_canned_cycles(o.program.dialect);
-  planning::OperationSettings op_settings{o.material, o.thickness_mm, canned, canned};
+  planning::OperationSettings op_settings;
+  op_settings.material = o.material;
+  op_settings.thickness_mm = o.thickness_mm;
+  op_settings.can_tap = op_settings.can_counterbore = canned;
   op_settings.spot = s.spot || o.machine.spot;
   op_settings.processes = processes.get();
+  op_settings.end_mill_mm = o.tooling.end_mill_mm;
   planning::Operations ops = planning::add_operations(loaded.holes, o.hole_source, loaded.features, op_settings, first_input);
   o.operations = std::move(ops.specs);
   loaded.feature_warnings.insert(loaded.feature_warnings.end(), ops.warnings.begin(), ops.warnings.end());
@@ -277,9 +282,14 @@ void PlanJob::Impl::write_hole_program() {
   ps.home = o.machine.start;
   ps.resume_from = s.resume_from;
   const std::size_t n_tools = plan.groups.size();
+  // Issue 82: a hole feature's other operations are counted apart from the holes.
+  const auto operations = static_cast<std::size_t>(
+      std::count_if(r.holes.begin(), r.holes.end(), [](const aco::Hole& h) { return h.operation != 0; }));
   ps.header_comments = {
       "SOURCE: " + source_name,
-      std::to_string(r.holes.size()) + " HOLES, " + std::to_string(n_tools) + (n_tools == 1 ? " TOOL" : " TOOLS"),
+      std::to_string(r.holes.size() - operations) + " HOLES" +
+          (operations ? " AND " + std::to_string(operations) + " OPERATIONS" : std::string()) + ", " + std::to_string(n_tools) +
+          (n_tools == 1 ? " TOOL" : " TOOLS"),
       "EST. TIME " + format_minutes(plan.optimized.time_s) + ", TRAVEL " + gcode::format_number(plan.optimized.travel_mm, 1) + " MM",
       "ORDER: ACODRILL " + std::string(aco::to_string(plan.solver.algorithm)) + " SEED " + std::to_string(plan.solver.seed),
       planning::origin_comment(placement),

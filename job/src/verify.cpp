@@ -14,8 +14,11 @@ namespace {
 // Whether a tool of `tool_mm` (milling a helix of path radius `milled_r`, or 0) makes a hole of `hole_mm`.
 bool makes(double tool_mm, double milled_r, double hole_mm, const planning::Tooling& tooling, std::uint32_t operation) {
   constexpr double kSame = 0.0015;  // a diameter printed with 3 decimals
-  // A tap, a countersink, a counterbore (issue 82): the tool of the operation's own diameter.
-  if (operation != 0) return milled_r == 0 && std::fabs(tool_mm - hole_mm) <= kSame;
+  // A tap, a countersink, a counterbore (issue 82): the tool of the operation's
+  // own diameter, or a counterbore milled by the end mill's helix to it.
+  if (operation != 0) {
+    return milled_r == 0 ? std::fabs(tool_mm - hole_mm) <= kSame : std::fabs(2.0 * milled_r + tool_mm - hole_mm) <= kMilledToleranceMm;
+  }
   const bool end_mill = tooling.end_mill_mm && std::fabs(tool_mm - *tooling.end_mill_mm) <= kSame;
   if (milled_r > 0) {
     return (!tooling.end_mill_mm || end_mill) && std::fabs(2.0 * milled_r + tool_mm - hole_mm) <= kMilledToleranceMm;

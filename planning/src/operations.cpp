@@ -63,8 +63,20 @@ gcode::Tool operation_tool(const OperationSpec& spec, Material material, const M
       t.cycle = spec.left_hand ? gcode::Cycle::G74 : gcode::Cycle::G84;
       break;
     }
-    case gcode::Operation::Countersink:
-    case gcode::Operation::Counterbore: {
+    case gcode::Operation::Counterbore:
+      if (spec.end_mill_mm > 0) {
+        // Milled by the end mill's helix to the counterbore's diameter and
+        // depth (GRBL, Marlin): the end mill's own data, its depth the counterbore's.
+        const gcode::Tool mill = generated_end_mill(spec.end_mill_mm, material, -spec.depth_mm, machine);
+        t.diameter_mm = mill.diameter_mm;
+        t.end_mill = true;
+        t.spindle_rpm = mill.spindle_rpm;
+        t.feed_mm_min = mill.feed_mm_min;
+        t.helix_pitch_mm = mill.helix_pitch_mm;
+        break;
+      }
+      [[fallthrough]];
+    case gcode::Operation::Countersink: {
       // HSS countersinks and piloted counterbores: slower than a drill at the
       // edge, a light feed, and a dwell at the bottom for a clean face.
       t.spindle_rpm = rpm_for(steel ? 12.0 : 30.0, spec.diameter_mm, machine);
@@ -169,9 +181,9 @@ Operations add_operations(aco::HoleSet& holes, std::vector<std::uint32_t>& hole_
   std::map<std::string, std::uint32_t> spec_index;
   auto add = [&](std::size_t hole, const OperationSpec& spec) {
     char key[400];
-    std::snprintf(key, sizeof key, "%d %.4f %.4f %.4f %.4f %d %d %.4f %.4f ", static_cast<int>(spec.kind), spec.diameter_mm,
+    std::snprintf(key, sizeof key, "%d %.4f %.4f %.4f %.4f %d %d %.4f %.4f %.4f ", static_cast<int>(spec.kind), spec.diameter_mm,
                   spec.depth_mm, spec.pitch_mm, spec.angle_deg, spec.left_hand ? 1 : 0, spec.rpm.value_or(0),
-                  spec.feed_mm_min.value_or(0), spec.dwell_s.value_or(-1));
+                  spec.feed_mm_min.value_or(0), spec.dwell_s.value_or(-1), spec.end_mill_mm);
     auto [it, fresh] = spec_index.emplace(std::string(key) + spec.thread + "|" + spec.name, static_cast<std::uint32_t>(out.specs.size() + 1));
     if (fresh) out.specs.push_back(spec);
     aco::Hole h = holes[hole];
@@ -182,7 +194,7 @@ Operations add_operations(aco::HoleSet& holes, std::vector<std::uint32_t>& hole_
     holes.push_back(std::move(h));
     if (!hole_source.empty()) hole_source.push_back(hole_source[hole]);
   };
-  std::map<std::string, std::size_t> by_hand_count, no_depth, no_bore;
+  std::map<std::string, std::size_t> by_hand_count, no_depth;
   std::uint32_t no_depth_line = 0;
   std::vector<std::size_t> spotted;  // holes spotted by the one spot drill (--spot, a rule's "spot")
   std::vector<char> is_spotted(holes.size(), 0), featured(holes.size(), 0);
@@ -283,10 +295,14 @@ Operations add_operations(aco::HoleSet& holes, std::vector<std::uint32_t>& hole_
       if (bore) {
         depth = st && st->depth_mm ? *st->depth_mm : f.depth_mm > 0 ? f.depth_mm : socket_head_counterbore_depth_mm(spec.diameter_mm);
         if (!s.can_counterbore) {
-          ++no_bore["D" + gcode::format_short(spec.diameter_mm)];
-          out.not_made.push_back({f.line, "counterbore D" + gcode::format_short(spec.diameter_mm) + at + ": this control cannot"});
-          bore = false;
-        } else if (!(depth > 0)) {
+          // GRBL and Marlin: the end mill's helix mills it, or nothing can.
+          if (!s.end_mill_mm || !(*s.end_mill_mm < spec.diameter_mm - 1e-9)) {
+            refuse(named + ": GRBL and Marlin programs mill counterbores with the end mill: give --end-mill DIA, smaller than D" +
+                   gcode::format_short(spec.diameter_mm) + " (or plan for a control with canned cycles)");
+          }
+          spec.end_mill_mm = *s.end_mill_mm;
+        }
+        if (!(depth > 0)) {
           ++no_depth["D" + gcode::format_short(spec.diameter_mm)];
           if (no_depth_line == 0) no_depth_line = f.line;
           out.not_made.push_back({f.line, "counterbore D" + gcode::format_short(spec.diameter_mm) + at + ": no depth given"});
@@ -311,7 +327,7 @@ Operations add_operations(aco::HoleSet& holes, std::vector<std::uint32_t>& hole_
       if (!s.can_tap) {
         ++by_hand_count[thread->name];
         out.by_hand.push_back("TAP " + thread->name + (tap_step && tap_step->left_hand ? " LH" : "") + at);
-        out.not_made.push_back({f.line, "tap " + thread->name + at + ": by hand, this control cannot tap"});
+        out.not_made.push_back({f.line, "tap " + thread->name + at + ", by hand"});
         continue;
       }
       OperationSpec spec;
@@ -369,11 +385,6 @@ Operations add_operations(aco::HoleSet& holes, std::vector<std::uint32_t>& hole_
     const auto [n, l] = listing(by_hand_count);
     out.warnings.push_back({0, std::to_string(n) + " tapped hole(s) (" + l + ") drilled at the tap drill; GRBL and Marlin "
                                 "cannot tap: the program ends with a pause that lists them, tap them by hand"});
-  }
-  if (!no_bore.empty()) {
-    const auto [n, l] = listing(no_bore);
-    out.warnings.push_back({0, std::to_string(n) + " counterbore(s) (" + l + ") not made: GRBL and Marlin programs "
-                                "do not counterbore yet; the holes are drilled"});
   }
   if (!no_depth.empty()) {
     const auto [n, l] = listing(no_depth);

@@ -22,7 +22,8 @@
  *  - what contradicts (a counterbore or a countersink as deep as the part or
  *    deeper): formats::InputError naming the feature.
  * GRBL and Marlin cannot tap: taps become lines for a last pause (tap by
- * hand), and counterbores are not made (no end-mill counterboring yet).
+ * hand); their counterbores are milled by the end mill's helix (--end-mill),
+ * and without one the job is refused (formats::InputError).
  */
 #include <cstdint>
 #include <optional>
@@ -49,6 +50,7 @@ struct OperationSpec {
   double angle_deg = 0.0;    // countersink
   std::string thread;        // tap: "M3"
   bool left_hand = false;    // tap: G74
+  double end_mill_mm = 0.0;  // counterbore: > 0, milled by this end mill's helix (GRBL, Marlin)
   // A process table's cutting data and name for the tool (unset: the defaults).
   std::optional<int> rpm;
   std::optional<double> feed_mm_min, dwell_s;
@@ -59,7 +61,8 @@ struct OperationSettings {
   Material material = Material::Steel;
   double thickness_mm = 6.35;
   bool can_tap = true;        // the dialect has canned cycles (G84)
-  bool can_counterbore = true;
+  bool can_counterbore = true;  // with a counterbore tool (G82); else with `end_mill_mm`'s helix, or refused
+  std::optional<double> end_mill_mm;
   // --spot: every drilled hole is spotted first, with one 90-degree spot
   // drill, to a cone the diameter of the smallest spotted hole (a spot no
   // wider than any of its holes: it centres the drill and leaves no chamfer).
