@@ -115,6 +115,23 @@ TEST(linuxcnc_filter, the_ini_reads_round_contours_and_states_an_excellon_format
   EXPECT_THAT(run_as_axis(dxf, t / "bad.ini").err, ::testing::HasSubstr("bad.ini:2: [ACODRILL] ROUND_CONTOURS is YES or NO"));
 }
 
+// Issue 82: the INI's PROCESSES and SPOT are --processes and --spot: the
+// build plate drawn without its callout gets its counterbores from the
+// table and every hole a spot first; rs274 reads the program back.
+TEST(linuxcnc_filter, the_ini_names_a_process_table_and_spots) {
+  testutil::TempDir t;
+  testutil::spit(t / "shop.json", R"({"processes": [{"kind": "undecided", "operations": ["drill", {"operation": "counterbore", "depth_mm": 3}]}]})");
+  testutil::spit(t / "shop.ini", "[ACODRILL]\nTIME_LIMIT = 0.5\nORIGIN = drawing\nPROCESSES = " + t / "shop.json" + "\nSPOT = YES\n");
+  const auto read = run_as_axis(testutil::data("dxf-features/build_plate_no_callout.dxf"), t / "shop.ini");
+  ASSERT_EQ(read.code, 0) << read.err;
+  EXPECT_THAT(read.out, ::testing::HasSubstr("90 DEG SPOT DRILL - 6 HOLES"));
+  EXPECT_THAT(read.out, ::testing::HasSubstr("6.500 MM COUNTERBORE - 4 HOLES"));
+  EXPECT_THAT(read.out, ::testing::HasSubstr("M3 TAP - 2 HOLES"));
+  testutil::spit(t / "p.ngc", read.out);
+  // 6 spots, 6 holes drilled, 4 counterbores, 2 taps.
+  EXPECT_EQ(oracles::run_rs274(t / "p.ngc").made.size(), 18u);
+}
+
 TEST(linuxcnc_filter, a_bad_file_or_setting_is_one_line_a_failure_and_no_program) {
   testutil::TempDir t;
   testutil::spit(t / "bad.drl", "M48\nMETRIC\nT1C0.8\n%\nT1\nX1.0Y\n");

@@ -42,9 +42,9 @@ constexpr const char* kUsage =
     "  TIME_LIMIT = 5              seconds the colony may take (default 5)\n"
     "  UNITS = mm                  program units (default: [TRAJ] LINEAR_UNITS)\n"
     "  also PROBE_PLATE, SLOTS, MATERIAL, THICKNESS, INPUT_UNITS, TOOLS, SIDE, MIRROR_AXIS, ALIGNMENT_PINS,\n"
-    "  APERTURES, SEED, THREADS, EXCELLON_FORMAT, DXF_UNITS, ROUND_TOLERANCE, CONCENTRIC: the acodrill plan\n"
-    "  options of the same names; ROUND_CONTOURS = YES reads DXF holes drawn without a CIRCLE\n"
-    "  (--round-contours).\n"
+    "  APERTURES, SEED, THREADS, EXCELLON_FORMAT, DXF_UNITS, ROUND_TOLERANCE, CONCENTRIC, PROCESSES: the\n"
+    "  acodrill plan options of the same names; ROUND_CONTOURS = YES reads DXF holes drawn without a CIRCLE\n"
+    "  (--round-contours); SPOT = YES spots every hole first (--spot).\n"
     "LinuxCNC sets INI_FILE_NAME to the INI it runs; without it the defaults apply.\n";
 
 // The [ACODRILL] keys and the `acodrill plan` options they become.
