@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "aco/error.h"
+#include "aco/hole_set.h"
 #include "app/errors.h"
 #include "app/files.h"
 #include "commands.h"
@@ -40,8 +41,7 @@ void print_summary(const PlanArgs& a, const job::Result& r) {
   auto pct = [](double before, double after) {
     return before > 0 ? gcode::format_number(100.0 * (before - after) / before, 1) + " %" : std::string("-");
   };
-  const auto operations = static_cast<std::size_t>(
-      std::count_if(r.holes.begin(), r.holes.end(), [](const aco::Hole& h) { return h.operation != 0; }));
+  const auto operations = aco::count_operations(r.holes);
   const std::string made = operations == 0 ? "" : " and " + std::to_string(operations) + " operation" + (operations == 1 ? "" : "s") + " at them";
   std::fprintf(stderr, "acodrill: %zu holes%s, %zu tool%s, %d iterations in %.2f s on %d thread%s%s\n", r.holes.size() - operations, made.c_str(), n_tools,
                n_tools == 1 ? "" : "s", plan.iterations, plan.solver_wall_s, plan.solver.threads,

@@ -473,8 +473,9 @@ RecognizedFeatures recognize_features(const aco::HoleSet& circles, const std::ve
     // undecided one, else the one the drawing decided).
     const Ring* by_rule = nullptr;
     if (processes != nullptr) {
-      if (f.kind == FeatureKind::Plain && !f.undecided_mm.empty()) f.kind = FeatureKind::Undecided;
-      f.rule = matching_rule(*processes, f, to_string(f.kind));
+      // Rules select by the kind as drawn: a plain hole with larger circles nothing decided is undecided.
+      const FeatureKind drawn = f.kind == FeatureKind::Plain && !f.undecided_mm.empty() ? FeatureKind::Undecided : f.kind;
+      f.rule = matching_rule(*processes, f, to_string(drawn));
       const ProcessRule* rule = f.rule ? &processes->rules[f.rule - 1] : nullptr;
       const ProcessStep* bore = rule ? step_of(*rule, gcode::Operation::Counterbore) : nullptr;
       const ProcessStep* sink = rule ? step_of(*rule, gcode::Operation::Countersink) : nullptr;
@@ -497,11 +498,9 @@ RecognizedFeatures recognize_features(const aco::HoleSet& circles, const std::ve
         f.evidence = rule->where;
         const double d = circles[by_rule->circle].diameter;
         f.undecided_mm.erase(std::remove(f.undecided_mm.begin(), f.undecided_mm.end(), d), f.undecided_mm.end());
-        if (f.undecided_mm.empty() && f.kind == FeatureKind::Undecided) f.kind = FeatureKind::Plain;
       } else if (rule != nullptr) {
         f.evidence += (f.evidence.empty() ? "" : "; ") + rule->where;
       }
-      if (f.kind == FeatureKind::Undecided) f.kind = FeatureKind::Plain;  // made so again below
     }
     for (const Ring& ring : g.rings) {
       if (ring.kind != FeatureKind::Undecided || &ring == by_rule) continue;

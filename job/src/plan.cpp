@@ -5,7 +5,6 @@
 // program_job.cpp.
 #include "job/plan.h"
 
-#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <map>
@@ -13,6 +12,7 @@
 #include <sstream>
 
 #include "aco/error.h"
+#include "aco/hole_set.h"
 #include "formats/error.h"
 #include "formats/writers.h"
 #include "gcode/program.h"
@@ -283,8 +283,7 @@ void PlanJob::Impl::write_hole_program() {
   ps.resume_from = s.resume_from;
   const std::size_t n_tools = plan.groups.size();
   // Issue 82: a hole feature's other operations are counted apart from the holes.
-  const auto operations = static_cast<std::size_t>(
-      std::count_if(r.holes.begin(), r.holes.end(), [](const aco::Hole& h) { return h.operation != 0; }));
+  const auto operations = aco::count_operations(r.holes);
   ps.header_comments = {
       "SOURCE: " + source_name,
       std::to_string(r.holes.size() - operations) + " HOLES" +

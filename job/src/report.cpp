@@ -1,10 +1,10 @@
 #include "job/report.h"
 
-#include <algorithm>
-
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <sstream>
+
+#include "aco/hole_set.h"
 
 namespace job {
 
@@ -20,8 +20,7 @@ std::string report_json(const aco::HoleSet& holes, const PlanResult& plan, const
   nlohmann::ordered_json j;
   // Issue 82: the holes drilled; a hole feature's other operations (taps,
   // counterbores, ...) made at them are counted apart.
-  const auto operations = static_cast<std::size_t>(
-      std::count_if(holes.begin(), holes.end(), [](const aco::Hole& h) { return h.operation != 0; }));
+  const auto operations = aco::count_operations(holes);
   j["holes"] = holes.size() - operations;
   j["operations"] = operations;
   j["tools"] = nlohmann::ordered_json::array();

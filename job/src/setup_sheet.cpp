@@ -1,9 +1,8 @@
 #include "job/setup_sheet.h"
 
-#include <algorithm>
-
 #include <sstream>
 
+#include "aco/hole_set.h"
 #include "job/svg.h"
 #include "gcode/program.h"
 #include "text.h"
@@ -31,8 +30,7 @@ std::string setup_sheet_html(const aco::HoleSet& holes, const PlanResult& plan, 
   auto feed = [&](double mm_min) { return gcode::format_number(inch ? mm_min / kMmPerInch : mm_min, inch ? 2 : 1); };
   const Placement& pl = ctx.placement;
   // Issue 82: a hole feature's other operations are no holes to the operator.
-  const auto operations = static_cast<std::size_t>(
-      std::count_if(holes.begin(), holes.end(), [](const aco::Hole& h) { return h.operation != 0; }));
+  const auto operations = aco::count_operations(holes);
   const Extent& e = pl.extent;
   auto esc = [](const std::string& s) { return xml_escape(s); };
 

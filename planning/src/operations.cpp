@@ -14,16 +14,26 @@ namespace planning {
 
 namespace {
 
-// ISO 4762 socket head cap screws' counterbores (DIN 974-1, row 1): the
-// counterbore's diameter and its depth, the head's height k = d plus the
-// allowance.
-struct Counterbore {
-  double screw_mm, diameter_mm, depth_mm;
+// Metric screws' holes (M3-M20): the ISO 273 clearance hole (medium), the
+// counterbore of an ISO 4762 socket head cap screw (DIN 974-1, row 1: its
+// diameter, and its depth, the head's height k = d plus the allowance), and
+// the head diameter of an ISO 10642 countersunk screw (dk max).
+struct ScrewHole {
+  double screw_mm, clearance_mm, counterbore_mm, counterbore_depth_mm, countersink_mm;
 };
-constexpr Counterbore kSocketHead[] = {
-    {3, 6.5, 3.4},   {4, 8.0, 4.4},   {5, 10.0, 5.4},  {6, 11.0, 6.4},   {8, 15.0, 8.6},
-    {10, 18.0, 10.6}, {12, 20.0, 12.6}, {16, 26.0, 16.6}, {20, 33.0, 20.6},
+constexpr ScrewHole kScrewHoles[] = {
+    {3, 3.4, 6.5, 3.4, 6.72},      {4, 4.5, 8.0, 4.4, 8.96},       {5, 5.5, 10.0, 5.4, 11.2},
+    {6, 6.6, 11.0, 6.4, 13.44},    {8, 9.0, 15.0, 8.6, 17.92},     {10, 11.0, 18.0, 10.6, 22.4},
+    {12, 13.5, 20.0, 12.6, 26.88}, {16, 17.5, 26.0, 16.6, 33.6},   {20, 22.0, 33.0, 20.6, 40.32},
 };
+
+// The row whose `field` is within 0.15 mm of `mm`, or null.
+const ScrewHole* screw_hole(double ScrewHole::*field, double mm) {
+  for (const ScrewHole& h : kScrewHoles) {
+    if (std::fabs(h.*field - mm) <= 0.15) return &h;
+  }
+  return nullptr;
+}
 
 // The features' places and drills, to find each among the holes.
 using Place = std::tuple<long long, long long, long long>;
@@ -31,18 +41,11 @@ Place place_of(aco::Point2 c, double d) {
   return {std::llround(c.x * 1000.0), std::llround(c.y * 1000.0), std::llround(d * 1000.0)};
 }
 
-int rpm_for(double vc_m_min, double d_mm, const Machine& machine) {
-  return static_cast<int>(std::clamp(std::round(1000.0 * vc_m_min / (M_PI * std::max(d_mm, 0.5))), 50.0,
-                                     std::max(50.0, static_cast<double>(machine.max_rpm))));
-}
-
 }  // namespace
 
 double socket_head_counterbore_depth_mm(double counterbore_mm) {
-  for (const Counterbore& c : kSocketHead) {
-    if (std::fabs(c.diameter_mm - counterbore_mm) <= 0.15) return c.depth_mm;
-  }
-  return 0.0;
+  const ScrewHole* h = screw_hole(&ScrewHole::counterbore_mm, counterbore_mm);
+  return h ? h->counterbore_depth_mm : 0.0;
 }
 
 gcode::Tool operation_tool(const OperationSpec& spec, Material material, const Machine& machine) {
@@ -54,11 +57,12 @@ gcode::Tool operation_tool(const OperationSpec& spec, Material material, const M
   t.angle_deg = spec.angle_deg;
   t.thread = spec.thread;
   const bool steel = material == Material::Steel;
+  auto rpm_for = [&](double vc_m_min) { return spindle_rpm_for(vc_m_min, std::max(spec.diameter_mm, 0.5), machine.max_rpm, 50.0); };
   switch (spec.kind) {
     case gcode::Operation::Tap: {
       // HSS machine taps (makers' tapping speeds, the slow end): the feed is
       // the pitch a turn, as G84 needs it.
-      t.spindle_rpm = std::min(rpm_for(steel ? 8.0 : 15.0, spec.diameter_mm, machine), 1000);
+      t.spindle_rpm = std::min(rpm_for(steel ? 8.0 : 15.0), 1000);
       t.feed_mm_min = spec.pitch_mm * t.spindle_rpm;
       t.cycle = spec.left_hand ? gcode::Cycle::G74 : gcode::Cycle::G84;
       break;
@@ -79,7 +83,7 @@ gcode::Tool operation_tool(const OperationSpec& spec, Material material, const M
     case gcode::Operation::Countersink: {
       // HSS countersinks and piloted counterbores: slower than a drill at the
       // edge, a light feed, and a dwell at the bottom for a clean face.
-      t.spindle_rpm = rpm_for(steel ? 12.0 : 30.0, spec.diameter_mm, machine);
+      t.spindle_rpm = rpm_for(steel ? 12.0 : 30.0);
       // (a counterbore about 0.01 mm a turn per mm of its diameter, makers' lower figures)
       const double per_rev = spec.kind == gcode::Operation::Countersink ? 0.05 : std::clamp(0.01 * spec.diameter_mm, 0.05, 0.2);
       t.feed_mm_min = std::max(5.0, std::round(t.spindle_rpm * per_rev));
@@ -90,17 +94,17 @@ gcode::Tool operation_tool(const OperationSpec& spec, Material material, const M
     case gcode::Operation::Ream:
       // HSS machine reamers: about two thirds of a drill's speed at the
       // edge, two to three times its feed a turn; fed in and out (G85).
-      t.spindle_rpm = rpm_for(steel ? 10.0 : 30.0, spec.diameter_mm, machine);
+      t.spindle_rpm = rpm_for(steel ? 10.0 : 30.0);
       t.feed_mm_min = std::max(10.0, std::round(t.spindle_rpm * std::clamp(0.02 * spec.diameter_mm, 0.08, 0.4)));
       t.cycle = gcode::Cycle::G85;
       break;
     case gcode::Operation::Spot:
       // HSS spot drills: a drill's speed at the edge, 0.05 mm a turn.
-      t.spindle_rpm = rpm_for(steel ? 20.0 : 60.0, spec.diameter_mm, machine);
+      t.spindle_rpm = rpm_for(steel ? 20.0 : 60.0);
       t.feed_mm_min = std::max(10.0, std::round(t.spindle_rpm * 0.05));
       break;
     default:
-      t.spindle_rpm = rpm_for(steel ? 15.0 : 40.0, spec.diameter_mm, machine);
+      t.spindle_rpm = rpm_for(steel ? 15.0 : 40.0);
       t.feed_mm_min = std::max(5.0, std::round(t.spindle_rpm * 0.01 * spec.diameter_mm));
       break;
   }
@@ -116,24 +120,6 @@ gcode::Tool operation_tool(const OperationSpec& spec, Material material, const M
 }
 
 namespace {
-
-// ISO 273 clearance holes (medium) for the socket head cap screws of
-// kSocketHead, and ISO 10642 countersunk screws' head diameters (dk max): a
-// process rule's counterbore or countersink of a hole drawn without its circle.
-struct Clearance {
-  double hole_mm, counterbore_mm, countersink_mm;
-};
-constexpr Clearance kClearance[] = {
-    {3.4, 6.5, 6.72},  {4.5, 8.0, 8.96},   {5.5, 10.0, 11.2},  {6.6, 11.0, 13.44}, {9.0, 15.0, 17.92},
-    {11.0, 18.0, 22.4}, {13.5, 20.0, 26.88}, {17.5, 26.0, 33.6}, {22.0, 33.0, 40.32},
-};
-
-const Clearance* clearance_of(double hole_mm) {
-  for (const Clearance& c : kClearance) {
-    if (std::fabs(c.hole_mm - hole_mm) <= 0.15) return &c;
-  }
-  return nullptr;
-}
 
 // A reamer's stock (Machinery's Handbook's range, its middle): what the
 // drill leaves for the reamer to take, on the diameter.
@@ -280,7 +266,7 @@ Operations add_operations(aco::HoleSet& holes, std::vector<std::uint32_t>& hole_
       OperationSpec spec;
       spec.kind = bore ? gcode::Operation::Counterbore : gcode::Operation::Countersink;
       const bool drawn_ring = f.kind == formats::FeatureKind::Counterbore || f.kind == formats::FeatureKind::Countersink;
-      const Clearance* screw = clearance_of(f.diameter_mm);
+      const ScrewHole* screw = screw_hole(&ScrewHole::clearance_mm, f.diameter_mm);
       spec.diameter_mm = st && st->diameter_mm ? *st->diameter_mm
                          : drawn_ring          ? f.outer_diameter_mm
                          : screw               ? (bore ? screw->counterbore_mm : screw->countersink_mm)

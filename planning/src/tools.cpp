@@ -99,11 +99,12 @@ void hss_data(Material material, double& vc, double& feed_per_d) {
   }
 }
 
-int rpm_for(double vc_m_min, double d, int max_rpm) {
-  return static_cast<int>(std::clamp(std::round(1000.0 * vc_m_min / (M_PI * d)), 100.0, std::max(100.0, double(max_rpm))));
-}
-
 }  // namespace
+
+int spindle_rpm_for(double vc_m_min, double diameter_mm, int max_rpm, double min_rpm) {
+  return static_cast<int>(
+      std::clamp(std::round(1000.0 * vc_m_min / (M_PI * diameter_mm)), min_rpm, std::max(min_rpm, double(max_rpm))));
+}
 
 gcode::Tool generated_drill(double diameter_mm, Material material, double thickness_mm, const Machine& machine) {
   // A board is drilled with carbide PCB drills in one stroke unless the
@@ -120,7 +121,7 @@ gcode::Tool generated_drill(double diameter_mm, Material material, double thickn
     // edge, and a feed per revolution growing with the diameter from about
     // 0.01 mm at 0.2 mm to 0.05 mm at 2 mm and above; one stroke, no pecks.
     const double vc_carbide = material == Material::Pcb ? 150.0 : vc * 2.0;
-    tool.spindle_rpm = rpm_for(vc_carbide, d, machine.max_rpm);
+    tool.spindle_rpm = spindle_rpm_for(vc_carbide, d, machine.max_rpm);
     const double per_rev = std::clamp(0.006 + 0.022 * d, 0.008, 0.05);
     tool.feed_mm_min = std::max(10.0, std::round(tool.spindle_rpm * per_rev));
     if (material == Material::Pcb) {
@@ -135,7 +136,7 @@ gcode::Tool generated_drill(double diameter_mm, Material material, double thickn
     tool.max_hits = default_max_hits(tool.diameter_mm);
     return tool;
   }
-  tool.spindle_rpm = rpm_for(vc, d, machine.max_rpm);
+  tool.spindle_rpm = spindle_rpm_for(vc, d, machine.max_rpm);
   tool.feed_mm_min = std::max(10.0, std::round(tool.spindle_rpm * feed_per_d * d));
   // Through the plate, plus the 118° point (0.3 D) and 0.5 mm to break through.
   tool.depth_mm = -(thickness_mm + 0.3 * d + 0.5);
@@ -160,7 +161,7 @@ gcode::Tool generated_end_mill(double diameter_mm, Material material, double thi
     case Material::Aluminium: vc = 200.0; chip_per_d = 0.01; pitch_per_d = 0.25; break;
     case Material::Pcb: break;
   }
-  tool.spindle_rpm = rpm_for(vc, d, machine.max_rpm);
+  tool.spindle_rpm = spindle_rpm_for(vc, d, machine.max_rpm);
   tool.feed_mm_min = std::max(10.0, std::round(tool.spindle_rpm * 2.0 * std::clamp(chip_per_d * d, 0.002, 0.05)));
   tool.depth_mm = -(thickness_mm + 0.3);
   tool.helix_pitch_mm = pitch_per_d * d;

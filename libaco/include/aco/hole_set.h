@@ -1,5 +1,6 @@
 #pragma once
 // Operations on a HoleSet that every reader shares (header-only, part of aco::geometry).
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <unordered_map>
@@ -7,6 +8,13 @@
 #include "aco/geometry.h"
 
 namespace aco {
+
+// Issue 82: how many holes of the set are a hole feature's other operations
+// (a tap, a counterbore, ...), which the program's header, the summary, the
+// report and the setup sheet count apart from the holes drilled.
+inline std::size_t count_operations(const HoleSet& holes) {
+  return static_cast<std::size_t>(std::count_if(holes.begin(), holes.end(), [](const Hole& h) { return h.operation != 0; }));
+}
 
 // Drops exact duplicates — same centre and diameter within `tolerance_mm` —
 // keeping the first occurrence and the file order; returns how many went.

@@ -70,6 +70,10 @@ gcode::Tool generated_drill(double diameter_mm, Material material, double thickn
 // board (a quarter in aluminium, a tenth in steel).
 gcode::Tool generated_end_mill(double diameter_mm, Material material, double thickness_mm, const Machine& machine);
 
+// The spindle speed that gives a cutting speed (m/min) at a diameter, within
+// [min_rpm, the machine's maximum].
+int spindle_rpm_for(double vc_m_min, double diameter_mm, int max_rpm, double min_rpm = 100.0);
+
 // The tool table of the tools the user owns: the drills choose_drills picks,
 // ascending, then the end mill for what they leave; each takes exactly its
 // designed diameters; `mapping` says what went where. Throws
