@@ -464,7 +464,8 @@ TEST(features_test, a_bad_process_table_is_one_line_naming_its_line) {
                        Bad{R"({"thread": "M9x3", "operations": ["drill"]})", "process 2: thread \"M9x3\" is no standard thread"},
                        Bad{R"({"operations": ["drill", "counterbore", "countersink"]})", "process 2: a hole is counterbored or countersunk, not both"},
                        Bad{R"({"diameter": 6, "operations": ["drill"]})", "process 2: unknown key \"diameter\""},
-                       Bad{R"({"operations": ["drill", {"operation": "tap", "thread": "M6", "hand": "both"}]})", "process 2: operation 2: \"hand\" must be right or left"}}) {
+                       Bad{R"({"operations": ["drill", {"operation": "tap", "thread": "M6", "hand": "both"}]})", "process 2: operation 2: \"hand\" must be right or left"},
+                       Bad{R"({"operations": ["drill", {"operation": "counterbore", "depth_mm": "deep"}]})", "process 2: operation 2: \"depth_mm\" must be a number"}}) {
     SCOPED_TRACE(b.rule);
     testutil::spit(t / "bad.json", "{\n  \"processes\": [\n    {\"kind\": \"tapped\", \"operations\": [\"drill\", \"tap\"]},\n    " + b.rule + "\n  ]\n}\n");
     auto r = acodrill_run("plan " + shell_quote(drawing("build_plate")) + " -o " + t / "p.nc" + " --processes " + t / "bad.json");

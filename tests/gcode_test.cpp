@@ -191,11 +191,15 @@ TEST(gcode_test, canned_cycle_dwells_and_taps_are_timed_in_the_controls_units) {
   EXPECT_DOUBLE_EQ(dwell_of("P2", false), 2.0);
   EXPECT_DOUBLE_EQ(dwell_of("P0.5", false), 0.5);
   gcode::Kinematics k;
-  const auto drill = gcode::time_program("G21 G90\nG0 X0 Y0 Z5\nG81 X10 Y0 Z-6 R1 F120\nG80\n", k);
-  const auto tap = gcode::time_program("G21 G90\nG0 X0 Y0 Z5\nG84 X10 Y0 Z-6 R1 F120\nG80\n", k);
-  // Down 7 mm at 120 mm/min either way; the tap also reverses and feeds the
-  // 7 mm back up (3.5 s), where the drill rapids out 11 mm, the tap 4 mm.
-  const double more = tap.drilling_s - drill.drilling_s;
-  EXPECT_GT(more, 3.0);
-  EXPECT_LT(more, k.tap_reverse_s + 3.5);
+  auto cycle = [&](const std::string& g) {
+    return gcode::time_program("G21 G90\nG0 X0 Y0 Z5\n" + g + " X10 Y0 Z-6 R1 F120\nG80\n", k).drilling_s;
+  };
+  // Down 7 mm at 120 mm/min each; a ream (G85) feeds the 7 mm back up (3.5
+  // s) where the drill rapids out 11 mm, the ream then 4 mm; a tap is the
+  // ream and its spindle's reversal at the bottom.
+  const double feed_out = cycle("G85") - cycle("G81");
+  EXPECT_GT(feed_out, 3.0);
+  EXPECT_LT(feed_out, 3.5);
+  EXPECT_NEAR(cycle("G84") - cycle("G85"), k.tap_reverse_s, 1e-9);
+  EXPECT_NEAR(cycle("G74") - cycle("G85"), k.tap_reverse_s, 1e-9);
 }

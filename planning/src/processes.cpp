@@ -127,11 +127,15 @@ formats::ProcessTable parse_process_table(const std::string& text, const std::st
       step.kind = *op;
       if (!seen.insert(step.kind).second) fail(at + "\"" + kind + "\" twice");
       if (o.is_object()) {
-        const std::string where = path;
-        auto positive = [&](const char* key) -> std::optional<double> {
+        // Numbers checked here, so that a wrong one names the rule's line too.
+        auto number = [&](const char* key) -> std::optional<double> {
           if (!o.contains(key)) return std::nullopt;
-          const double v = json_number(o, key, 0.0, where);
-          if (!(v > 0 && v < 1e4)) fail(at + "\"" + key + "\" must be positive");
+          if (!o[key].is_number()) fail(at + "\"" + key + "\" must be a number");
+          return o[key].get<double>();
+        };
+        auto positive = [&](const char* key) -> std::optional<double> {
+          const std::optional<double> v = number(key);
+          if (v && !(*v > 0 && *v < 1e4)) fail(at + "\"" + key + "\" must be positive");
           return v;
         };
         step.diameter_mm = positive("diameter_mm");
@@ -140,11 +144,8 @@ formats::ProcessTable parse_process_table(const std::string& text, const std::st
         if (step.angle_deg && !(*step.angle_deg < 180)) fail(at + "\"angle_deg\" must be below 180");
         if (const auto f = positive("feed_mm_min")) step.feed_mm_min = f;
         if (const auto r = positive("rpm")) step.rpm = static_cast<int>(std::lround(*r));
-        if (o.contains("dwell_s")) {
-          const double v = json_number(o, "dwell_s", 0.0, where);
-          if (!(v >= 0 && v <= 60)) fail(at + "\"dwell_s\" must be 0..60");
-          step.dwell_s = v;
-        }
+        step.dwell_s = number("dwell_s");
+        if (step.dwell_s && !(*step.dwell_s >= 0 && *step.dwell_s <= 60)) fail(at + "\"dwell_s\" must be 0..60");
         step.thread = text_of(o, "thread", path, line);
         step.name = text_of(o, "name", path, line);
         const std::string hand = text_of(o, "hand", path, line);
