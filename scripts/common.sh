@@ -8,8 +8,8 @@ cd "$ROOT"
 # Debian packages the build and the tests need. Checked with dpkg (fast) and
 # installed only when missing, so a second run costs nothing.
 BUILD_PACKAGES=(cmake ninja-build g++ gcc make libeigen3-dev libtinyxml2-dev libgtest-dev libgmock-dev libbenchmark-dev
-                nlohmann-json3-dev libcli11-dev libnanoflann-dev help2man)
-TEST_PACKAGES=(python3-ezdxf librsvg2-bin)
+                nlohmann-json3-dev libcli11-dev libnanoflann-dev help2man zlib1g-dev)
+TEST_PACKAGES=(python3-ezdxf librsvg2-bin zip)
 # LinuxCNC's standalone interpreter rs274 reads our programs back in the tests
 # (gcc and make above also build GRBL's own parser, tests/grbl-sim).
 # Headless chromium prints the setup sheet to PDF and pdftotext reads it back.
@@ -81,14 +81,15 @@ build() {
   cmake --build "$BUILD" -j "$jobs" ${BUILD_TARGETS:+--target $BUILD_TARGETS}
 }
 
-# tinyxml2's sources from Debian's source package (Debian builds it for
-# Linux only), for the Windows and browser builds: fetched once into
-# DIR/src through a private apt source list (the machine's own apt
-# configuration is left as it is). Prints the source folder.
-fetch_tinyxml2_source() {
-  local deps="$1"
+# A library's sources from Debian's source package, for the Windows and
+# browser builds of what Debian builds for Linux only (tinyxml2; zlib for
+# the page): fetched once into DIR/src through a private apt source list
+# (the machine's own apt configuration is left as it is). Prints the source
+# folder.  fetch_debian_source DIR PACKAGE
+fetch_debian_source() {
+  local deps="$1" package="$2"
   local src
-  src=$(find "$deps/src" -maxdepth 1 -type d -name 'tinyxml2*' 2>/dev/null | head -n 1)
+  src=$(find "$deps/src" -maxdepth 1 -type d -name "$package-*" 2>/dev/null | head -n 1)
   if [ -z "$src" ]; then
     local apt_src=(-o Dir::Etc::SourceList=/dev/null -o Dir::Etc::SourceParts="$deps/apt/etc" -o Dir::State::Lists="$deps/apt/lists")
     mkdir -p "$deps/apt/etc" "$deps/apt/lists/partial" "$deps/src"
@@ -100,9 +101,10 @@ Components: main
 Signed-By: /usr/share/keyrings/debian-archive-keyring.gpg
 SOURCES
     apt-get "${apt_src[@]}" -qq update >&2
-    (cd "$deps/src" && apt-get "${apt_src[@]}" -qq source --download-only tinyxml2 2>/dev/null >&2)
-    tar -xf "$deps"/src/tinyxml2_*.orig.tar.* -C "$deps/src"
-    src=$(find "$deps/src" -maxdepth 1 -type d -name 'tinyxml2*' | head -n 1)
+    (cd "$deps/src" && apt-get "${apt_src[@]}" -qq source --download-only "$package" 2>/dev/null >&2)
+    tar -xf "$deps"/src/"${package}"_*.orig.tar.* -C "$deps/src"
+    src=$(find "$deps/src" -maxdepth 1 -type d -name "$package-*" | head -n 1)
   fi
   echo "$src"
 }
+fetch_tinyxml2_source() { fetch_debian_source "$1" tinyxml2; }

@@ -67,6 +67,9 @@ void add_input_options(CLI::App* cmd, cli::InputArgs& args) {
                   "CBORE, CSK, ... or a hole callout says which), never drilled through; a circle with a thread's arc "
                   "(about 3/4 of a turn at a standard major diameter) a tapped hole, drilled at the tap drill. "
                   "separate: every circle a hole of its own, drilled through");
+  cmd->add_option("--step", a.step,
+                  "ODB++ and IPC-2581: the step to drill, by name (default: the panel step, which places the others "
+                  "with its step-and-repeat, if there is one, else the only step)");
   cmd->add_option("--dxf-units", a.dxf_units,
                   "mm | cm | m | inch | feet: the unit a DXF is drawn in, whatever its $INSUNITS header says (Onshape "
                   "writes inch for drawings made in mm)");
@@ -177,10 +180,13 @@ int main(int argc, char** argv) {
       "                                                            six boards a panel, the time for 50 panels\n"
       "  acodrill plan pcb2gcode-drill.ngc -o shorter.ngc --keep-style\n"
       "                                                            another CAM's program, its holes reordered per tool\n"
-      "Inputs: DXF, Excellon, Gerber (RS-274X/X2; RS-274D with --apertures), XML hole map, CSV (x,y,diameter mm),\n"
-      "TSPLIB, a G-code drilling program (canned or expanded: its tools, cycles and depths are kept); '-' reads stdin.");
+      "  acodrill plan job.tgz -o job.nc                           a board house's ODB++ job (a folder, .tgz or .zip;\n"
+      "                                                            --step NAME), or IPC-2581: plated and non-plated apart\n"
+      "Inputs: DXF, Excellon, Gerber (RS-274X/X2; RS-274D with --apertures), IPC-2581, ODB++, XML hole map,\n"
+      "CSV (x,y,diameter mm), TSPLIB, a G-code drilling program (canned or expanded: its tools, cycles and depths\n"
+      "are kept); '-' reads stdin.");
   plan_cmd->add_option("input", plan.inputs,
-                       "Input files, one job (DXF, Excellon, Gerber, XML, CSV, TSPLIB, any mix; holes of one diameter "
+                       "Input files, one job (DXF, Excellon, Gerber, IPC-2581, ODB++, XML, CSV, TSPLIB, any mix; holes of one diameter "
                        "share a tool), or one G-code program to reorder; - reads stdin")
       ->required();
   plan_cmd->add_option("-o,--output", plan.output, "Program to write (- = stdout)")->required();

@@ -84,6 +84,7 @@ void print_warnings(const formats::LoadedHoles& loaded, const std::string& path,
     summary += ", " + std::to_string(loaded.slots_drilled) + " slot(s) drilled as " + std::to_string(loaded.slot_holes) + " holes";
   }
   if (loaded.slots_milled) summary += ", " + std::to_string(loaded.slots_milled) + " slot(s) milled along their length";
+  if (!loaded.description.empty()) summary += "; " + loaded.description;
   const std::string features = formats::features_summary(loaded.features);
   if (!features.empty()) summary += "; hole features: " + features;
   if (!loaded.skipped.empty()) {

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "aco/hole_set.h"
+#include "formats/archive.h"
 #include "formats/readers.h"
 #include "gcode/program.h"
 #include "text.h"
@@ -22,7 +23,7 @@ void check_text(const std::string& path, std::string_view data) {
                                       static_cast<unsigned char>(head[0]) == 0xFF ||
                                       static_cast<unsigned char>(head[0]) == 0xFE);
     throw InputError(path, 1, utf16 ? "UTF-16 text is not supported; save the file as ASCII or UTF-8"
-                                   : "binary data: not a hole file acodrill reads (DXF, Excellon, XML, CSV, TSPLIB)");
+                                   : "binary data: not a hole file acodrill reads (DXF, Excellon, Gerber, IPC-2581, ODB++, XML, CSV, TSPLIB)");
   }
 }
 
@@ -131,14 +132,19 @@ const char* to_string(InputFormat f) {
     case InputFormat::Csv: return "csv";
     case InputFormat::Tsplib: return "tsplib";
     case InputFormat::Program: return "g-code program";
+    case InputFormat::Ipc2581: return "ipc-2581";
+    case InputFormat::Odb: return "odb++";
   }
   return "?";
 }
 
 InputFormat detect_format(const std::string& path, std::string_view data) {
   if (dxf::looks_like_dxf(data.substr(0, 65536))) return InputFormat::Dxf;
+  // An archive (an ODB++ job, or KiCad's zipped IPC-2581): what is inside decides, in parse_sources.
+  if (archive_kind(data) != ArchiveKind::None) return InputFormat::Odb;
   std::string_view head = trim(data.substr(0, 4096));
-  if (!head.empty() && head.front() == '<') return InputFormat::XmlMap;
+  if (head.substr(0, 3) == "\xEF\xBB\xBF") head = trim(head.substr(3));  // a UTF-8 byte order mark (Windows tools write one)
+  if (!head.empty() && head.front() == '<') return looks_like_ipc2581(head) ? InputFormat::Ipc2581 : InputFormat::XmlMap;
   if (gcode::looks_like_gcode(data.substr(0, 65536))) return InputFormat::Program;
   if (looks_like_gerber(data.substr(0, 65536))) return InputFormat::Gerber;
   if (looks_like_excellon(data.substr(0, 65536))) return InputFormat::Excellon;
@@ -155,11 +161,117 @@ InputFormat detect_format(const std::string& path, std::string_view data) {
   return InputFormat::Csv;
 }
 
+namespace {
+
+// A board job's sources (IPC-2581, ODB++), each with the slot policy and the
+// filters applied; sources the filters leave empty are dropped (one stays).
+std::vector<LoadedHoles> board_sources(const std::string& path, std::string_view data, const InputOptions& options) {
+  const std::string shown = path == "-" ? "<stdin>" : path;
+  std::vector<LoadedHoles> sources;
+  if (archive_kind(data) == ArchiveKind::None) {
+    sources = parse_ipc2581(shown, data, options);
+  } else {
+    const std::vector<ArchiveEntry> entries = unpack_archive(shown, data);
+    const bool odb = std::any_of(entries.begin(), entries.end(), [](const ArchiveEntry& e) {
+      const std::string p = e.path.size() >= 13 ? e.path.substr(e.path.size() - 13) : e.path;
+      return p == "matrix/matrix" || p == "MATRIX/MATRIX";
+    });
+    std::vector<const ArchiveEntry*> ipc;
+    for (const ArchiveEntry& e : entries) {
+      if (looks_like_ipc2581(trim(std::string_view(e.bytes).substr(0, 4096)))) ipc.push_back(&e);
+    }
+    if (odb || ipc.size() != 1) {
+      if (!odb) {
+        std::string names;
+        for (std::size_t k = 0; k < entries.size() && k < 5; ++k) names += (k ? ", " : "") + entries[k].path;
+        if (entries.size() > 5) names += ", ...";
+        throw InputError(shown, 0, "an archive with neither an ODB++ job (no matrix/matrix) nor one IPC-2581 file" +
+                                       (entries.empty() ? std::string(" (it is empty)") : "; it holds " + names));
+      }
+      sources = parse_odb(shown, entries, options);
+    } else {
+      sources = parse_ipc2581(shown + ":" + ipc.front()->path, ipc.front()->bytes, options);
+    }
+  }
+  for (LoadedHoles& s : sources) {
+    // Numbers too large for the board (1e308 mm, or turned into infinity by a unit): refused where they are written.
+    auto finite = [](aco::Point2 p) { return std::isfinite(p.x) && std::isfinite(p.y); };
+    for (const aco::Hole& h : s.holes) {
+      if (!finite(h.center) || !std::isfinite(h.diameter)) throw InputError(shown, h.source_line, "a hole's numbers are too large to be a board's");
+    }
+    for (const Slot& slot : s.slots) {
+      if (!finite(slot.from) || !finite(slot.to) || !std::isfinite(slot.width_mm)) {
+        throw InputError(shown, slot.source_line, "a slot's numbers are too large to be a board's");
+      }
+    }
+    apply_slot_policy(s, options.slots, shown, options.dxf.max_holes);
+    filter(s, options);
+    s.name = stem(path);
+  }
+  // A source the filters emptied is dropped (one stays); its counts, and what
+  // the file says as a whole (the first source's), go to the first kept.
+  std::vector<bool> keep(sources.size());
+  for (std::size_t k = 0; k < sources.size(); ++k) keep[k] = !sources[k].holes.empty() || !sources[k].skipped.empty();
+  if (std::find(keep.begin(), keep.end(), true) == keep.end()) keep[0] = true;
+  std::vector<LoadedHoles> kept;
+  for (std::size_t k = 0; k < sources.size(); ++k) {
+    if (keep[k]) kept.push_back(std::move(sources[k]));
+  }
+  for (std::size_t k = 0; k < sources.size(); ++k) {
+    if (keep[k]) continue;
+    LoadedHoles& s = sources[k];
+    LoadedHoles& to = kept.front();
+    to.skipped_by_filter += s.skipped_by_filter;
+    to.duplicates_removed += s.duplicates_removed;
+    if (!s.description.empty()) to.description = std::move(s.description);
+    to.warnings.insert(to.warnings.begin(), s.warnings.begin(), s.warnings.end());
+  }
+  if (kept.size() == 1) kept.front().source_label.clear();
+  return kept;
+}
+
+}  // namespace
+
+std::vector<LoadedHoles> parse_sources(const std::string& path, std::string_view data, const InputOptions& options) {
+  const InputFormat format = data.empty() ? InputFormat::Csv : detect_format(path, data);
+  if (format != InputFormat::Ipc2581 && format != InputFormat::Odb) return {parse_holes(path, data, options)};
+  return board_sources(path, data, options);
+}
+
 LoadedHoles parse_holes(const std::string& path, std::string_view data, const InputOptions& options) {
   const std::string shown = path == "-" ? "<stdin>" : path;
   if (data.empty()) throw InputError(shown, 0, "empty file: no holes");
   LoadedHoles out;
   switch (detect_format(path, data)) {
+    case InputFormat::Ipc2581:
+    case InputFormat::Odb: {
+      // One list of every source's holes (`acodrill holes`); plan reads them apart (parse_sources).
+      std::vector<LoadedHoles> sources = board_sources(path, data, options);
+      out = std::move(sources.front());
+      std::uint32_t chain_base = 0;
+      for (const aco::Hole& h : out.holes) chain_base = std::max(chain_base, h.chain);
+      for (std::size_t k = 1; k < sources.size(); ++k) {
+        LoadedHoles& s = sources[k];
+        std::uint32_t top = chain_base;
+        for (aco::Hole& h : s.holes) {
+          if (h.chain != 0) h.chain += chain_base;
+          top = std::max(top, h.chain);
+          out.holes.push_back(std::move(h));
+        }
+        chain_base = top;
+        out.slots.insert(out.slots.end(), s.slots.begin(), s.slots.end());
+        out.skipped.insert(out.skipped.end(), s.skipped.begin(), s.skipped.end());
+        out.warnings.insert(out.warnings.end(), s.warnings.begin(), s.warnings.end());
+        out.duplicates_removed += s.duplicates_removed;
+        out.skipped_by_filter += s.skipped_by_filter;
+        out.slots_drilled += s.slots_drilled;
+        out.slots_milled += s.slots_milled;
+        out.slot_holes += s.slot_holes;
+      }
+      if (sources.size() > 1) out.drill_function.clear();  // plated and non-plated together: no one function
+      out.source_label.clear();
+      return out;
+    }
     case InputFormat::Dxf: {
       dxf::ReadOptions o = options.dxf;
       o.default_unit_mm = options.default_unit_mm;

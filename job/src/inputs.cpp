@@ -16,11 +16,39 @@ formats::LoadedHoles read_input(const InputFile& file, const formats::InputOptio
   return formats::parse_holes(file.name, file.bytes, with);
 }
 
+namespace {
+
+// A file's drill sources: one, or (IPC-2581, ODB++) its plated and
+// non-plated holes and blind spans apart, each named "FILE (plated)".
+std::vector<std::pair<std::string, formats::LoadedHoles>> read_sources(const InputFile& file, const formats::InputOptions& options) {
+  formats::InputOptions with = options;
+  if (!file.nc_param.empty() && options.nc_param.empty()) with.nc_param = file.nc_param;
+  std::vector<std::pair<std::string, formats::LoadedHoles>> out;
+  for (formats::LoadedHoles& part : formats::parse_sources(file.name, file.bytes, with)) {
+    const std::string shown = file.name == "-" ? "<stdin>" : file.name;
+    const std::string name = part.source_label.empty() ? file.name : shown + " (" + part.source_label + ")";
+    out.emplace_back(name, std::move(part));
+  }
+  return out;
+}
+
+}  // namespace
+
 Inputs read_inputs(const std::vector<InputFile>& files, const formats::InputOptions& options) {
   Inputs job;
-  if (files.size() == 1) {
-    job.holes = read_input(files[0], options);
-    job.sources.push_back({files[0].name, job.holes.holes.size()});
+  std::vector<std::pair<std::string, formats::LoadedHoles>> read;
+  std::vector<bool> first_of_file;  // per source: the first of its file (the job's name has each file once)
+  for (const InputFile& file : files) {
+    bool first = true;
+    for (auto& source : read_sources(file, options)) {
+      first_of_file.push_back(first);
+      first = false;
+      read.push_back(std::move(source));
+    }
+  }
+  if (read.size() == 1) {
+    job.holes = std::move(read.front().second);
+    job.sources.push_back({read.front().first, job.holes.holes.size()});
     job.hole_source.assign(job.holes.holes.size(), 0);
     formats::LoadedHoles summary = job.holes;
     summary.holes.clear();
@@ -33,9 +61,10 @@ Inputs read_inputs(const std::vector<InputFile>& files, const formats::InputOpti
   formats::LoadedHoles& all = job.holes;
   std::vector<std::string> stems;
   std::uint32_t chain_base = 0;  // the highest slot chain number of the files before
-  for (std::size_t k = 0; k < files.size(); ++k) {
-    formats::LoadedHoles part = read_input(files[k], options);
-    const std::string shown = files[k].name == "-" ? "<stdin>" : files[k].name;
+  for (std::size_t k = 0; k < read.size(); ++k) {
+    formats::LoadedHoles& part = read[k].second;
+    const std::string& name = read[k].first;
+    const std::string shown = name == "-" ? "<stdin>" : name;
     if (part.program) {
       throw formats::InputError(shown, 0, "a drilling program is reordered on its own; give it without other inputs");
     }
@@ -69,8 +98,8 @@ Inputs read_inputs(const std::vector<InputFile>& files, const formats::InputOpti
     all.slots_drilled += part.slots_drilled;
     all.slots_milled += part.slots_milled;
     all.slot_holes += part.slot_holes;
-    job.sources.push_back({files[k].name, part.holes.size()});
-    stems.push_back(part.name);
+    job.sources.push_back({name, part.holes.size()});
+    if (first_of_file[k]) stems.push_back(part.name);
     part.holes.clear();
     job.parts.push_back(std::move(part));
   }

@@ -92,6 +92,7 @@ formats::InputOptions input_options(const InputSettings& a) {
     throw UserError("--concentric must be features or separate (got \"" + a.concentric + "\")");
   }
   o.concentric_separate = a.concentric == "separate";
+  o.step = a.step;
   if (a.processes) {
     o.processes = std::make_shared<const formats::ProcessTable>(planning::parse_process_table(a.processes->text, a.processes->name));
   }

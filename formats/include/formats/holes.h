@@ -36,7 +36,7 @@ inline std::string file_name(const std::string& path) {
   return slash == std::string::npos ? path : path.substr(slash + 1);
 }
 
-enum class InputFormat { Dxf, Excellon, Gerber, XmlMap, Csv, Tsplib, Program };
+enum class InputFormat { Dxf, Excellon, Gerber, XmlMap, Csv, Tsplib, Program, Ipc2581, Odb };
 const char* to_string(InputFormat f);
 
 // A slot: an oval hole `width_mm` wide whose centre runs from `from` to `to`
@@ -82,6 +82,9 @@ struct InputOptions {
   bool concentric_separate = false;
   // Issue 82: --processes, shared by every input of a job (null: none).
   std::shared_ptr<const ProcessTable> processes;
+  // Issue 86: the step of an ODB++ or IPC-2581 job to drill (--step; empty:
+  // the panel step if there is one, else the only step).
+  std::string step;
 };
 
 struct Note {
@@ -122,7 +125,16 @@ struct LoadedHoles {
   // undecided circles): a line each on stderr, not folded into `warnings`.
   std::vector<Note> feature_warnings;
   // Gerber X2: the file's %TF.FileFunction ("Plated,1,4,PTH,Drill"): plating and layer span.
+  // IPC-2581 and ODB++: the same words for each of its drill sources.
   std::string drill_function;
+  // IPC-2581 and ODB++ (issue 86): a board job holds several drill sources
+  // (plated and non-plated holes, a blind span), each read as a file of its
+  // own, as PTH and NPTH drill files are: this one's ("plated",
+  // "non-plated", "plated, blind 1-2"); empty for a file of one source.
+  std::string source_label;
+  // What such a file holds beyond its holes, for the summary: its format,
+  // step, drill layers and board size.
+  std::string description;
   // A drilling program (another CAM's G-code): its tool runs and how each hole
   // is made, which `plan` reorders; `holes` holds the same holes (layer "T<n>",
   // the diameter where the program's comments give it).
@@ -154,6 +166,12 @@ aco::Metric tsplib_metric(const LoadedHoles& loaded);
 
 // Chooses the reader by content, reads, applies the layer and diameter
 // filters and drops exact duplicates (a program's are counted, not dropped). `path` names the file in messages ("-": standard input).
+// An IPC-2581 or ODB++ job's drill sources come back as one.
 LoadedHoles parse_holes(const std::string& path, std::string_view data, const InputOptions& options);
+
+// The same, a LoadedHoles for each drill source of the file: one for every
+// format but IPC-2581 and ODB++ (an archive or a folder packed as a tar),
+// whose plated and non-plated holes and blind spans are sources apart.
+std::vector<LoadedHoles> parse_sources(const std::string& path, std::string_view data, const InputOptions& options);
 
 }  // namespace formats

@@ -5,6 +5,9 @@
 #include <string>
 #include <string_view>
 
+#include <vector>
+
+#include "formats/archive.h"
 #include "formats/holes.h"
 
 namespace formats {
@@ -21,5 +24,11 @@ bool looks_like_gerber(std::string_view head);
 LoadedHoles parse_program(const std::string& path, std::string_view data);
 
 LoadedHoles parse_gerber(const std::string& path, std::string_view data, const InputOptions& options);
+
+// Issue 86: board jobs, a LoadedHoles per drill source (formats/src/board.h),
+// before the slot policy and the filters.
+bool looks_like_ipc2581(std::string_view head);
+std::vector<LoadedHoles> parse_ipc2581(const std::string& path, std::string_view data, const InputOptions& options);
+std::vector<LoadedHoles> parse_odb(const std::string& path, const std::vector<ArchiveEntry>& entries, const InputOptions& options);
 
 }  // namespace formats

@@ -53,6 +53,7 @@ struct InputSettings {
   double round_tolerance_pct = 2.5;
   std::string dxf_units;  // mm | cm | m | inch | feet; empty: the DXF's header
   std::string concentric = "features";  // features | separate (issue 82)
+  std::string step;                      // an ODB++ or IPC-2581 job's step (issue 86); empty: its panel, else its only step
   std::optional<NamedText> processes;    // a process table (JSON, issue 82)
 };
 
