@@ -422,7 +422,8 @@ void Reader::body_line(std::string_view s) {
     std::string_view v = number_at(s, i);
     switch (letter) {
       case 'G': {
-        const int g = static_cast<int>(plain_number(v));
+        const double code = plain_number(v);
+        const int g = std::fabs(code) < 1e6 ? static_cast<int>(code) : -1;  // G1e33 is no G code acodrill knows
         if (g == 0 || g == 1 || g == 2 || g == 3) {
           route_mode_ = true;
           motion = g;
@@ -458,8 +459,9 @@ void Reader::body_line(std::string_view s) {
       }
       case 'R': {
         if (v.empty()) fail("R without a count");
-        repeat = static_cast<long long>(plain_number(v));
-        if (*repeat < 0 || *repeat > 1000000) fail("repeat count out of range");
+        const double count = plain_number(v);
+        if (count < 0 || count > 1000000) fail("repeat count out of range");
+        repeat = static_cast<long long>(count);
         break;
       }
       case 'M': case 'F': case 'S': case 'A': case 'I': case 'J': case 'D': case 'P': case 'Z':

@@ -33,8 +33,9 @@ inline std::size_t remove_duplicate_holes(HoleSet& holes, double tolerance_mm = 
   std::size_t kept = 0;
   for (std::size_t i = 0; i < holes.size(); ++i) {
     const Hole& h = holes[i];
-    const long long qx = std::llround(h.center.x / tolerance_mm);
-    const long long qy = std::llround(h.center.y / tolerance_mm);
+    // Clamped: a coordinate of 1e300 mm has a cell too (the neighbours' ±1 must not overflow).
+    const long long qx = std::llround(std::clamp(h.center.x / tolerance_mm, -4e18, 4e18));
+    const long long qy = std::llround(std::clamp(h.center.y / tolerance_mm, -4e18, 4e18));
     bool duplicate = false;
     for (long long dx = -1; dx <= 1 && !duplicate; ++dx) {
       for (long long dy = -1; dy <= 1 && !duplicate; ++dy) {
