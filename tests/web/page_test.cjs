@@ -121,6 +121,17 @@ async function fresh(context) {
   const results = await page.getByRole('region', { name: 'Results' }).textContent();
   check(results.includes('nearest neighbour') && results.includes('Tool changes'), 'the results show the time split');
 
+  // 2b. A board house's ODB++ job (issue 86), KiCad's zip of it: its plated and
+  // non-plated holes two sources, as the command line reads them.
+  const odb = path.join(root, 'tests', 'data', 'boards', 'pic_programmer', 'pic_programmer.odb.zip');
+  await fill(page, { Machine: '', 'Drills owned': '', 'End mill': '', Iterations: '20', Seed: '4' });
+  await page.getByLabel('Input files', { exact: true }).setInputFiles(odb);
+  saved = await planAndSave(page);
+  check(saved.bytes.equals(cli([odb], ['--iterations', '20', '--seed', '4'])), 'ODB++: the program is acodrill plan\'s, byte for byte');
+  const odbText = await page.getByRole('region', { name: 'Holes' }).textContent();
+  check(odbText.includes('(non-plated): 6 holes from odb++') && odbText.includes('board 160.020 x 99.060 mm'),
+        'the holes region names the sources and the board: ' + odbText.slice(0, 300));
+
   // 3. A panel of six, from the back with pins, Fanuc in inch.
   await fill(page, { Machine: '', 'Drills owned': '', 'End mill': '', Panel: '3x2', Pitch: '120,90', Side: 'back',
                      'Alignment pins': '3', Origin: 'center', Dialect: 'fanuc', Units: 'inch', Iterations: '25', Seed: '2' });

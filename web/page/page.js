@@ -380,7 +380,8 @@
     }
     const notes = [];
     for (const i of view.inputs) {
-      notes.push(i.file + ': ' + i.holes + ' holes from ' + i.format + (i.features ? '; hole features: ' + i.features : ''));
+      notes.push(i.file + ': ' + i.holes + ' holes from ' + i.format + (i.description ? '; ' + i.description : '') +
+                 (i.features ? '; hole features: ' + i.features : ''));
       for (const a of i.assumptions) notes.push(i.file + ': assumed ' + a);
       for (const w of i.warnings) notes.push(i.file + (w.line ? ':' + w.line : '') + ': warning: ' + w.what);
       for (const s of i.not_drilled) notes.push(i.file + (s.line ? ':' + s.line : '') + ': not made: ' + s.what);

@@ -139,6 +139,7 @@ json holes_of(const job::Result& r) {
                       {"warnings", notes},
                       {"not_drilled", skipped},
                       {"assumptions", part.assumptions},
+                      {"description", part.description},  // issue 86: a board job's step, drill layers, size
                       {"slots_drilled", part.slots_drilled},
                       {"round_contours", part.round_contours},
                       {"features", formats::features_summary(part.features)}});
