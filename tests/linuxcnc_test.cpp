@@ -407,7 +407,11 @@ TEST_P(ReorderedProgram, rs274_reads_the_same_holes_tools_and_depths_and_no_long
     const std::string text = testutil::slurp(out);
     const double out_scale = text.find("G20") != std::string::npos ? 25.4 : 1.0;
     const CanonRun after = run_rs274(text, out_scale, what);
-    const auto a = sorted(before.holes), b = sorted(after.holes);
+    auto b_holes = after.holes;
+    if (testutil::tools_only_in_comments(input_text)) {
+      for (auto& h : b_holes) h.tool = 0;  // rs274 saw no tool in the input: its changes are comments (issue 83)
+    }
+    const auto a = sorted(before.holes), b = sorted(b_holes);
     ASSERT_EQ(a.size(), b.size()) << what;
     const double tol = 0.00005 * 25.4 + 0.0005;
     for (std::size_t i = 0; i < a.size(); ++i) {
@@ -586,6 +590,9 @@ TEST_P(HobbyDialect, reordered_for_grbl_and_marlin_drills_the_same_holes) {
     auto a = before.holes, b = after.holes;
     if (marlin) {
       for (auto& h : a) h.tool = 0;  // Marlin has no T word for a spindle; its pauses name the drill
+    }
+    if (testutil::tools_only_in_comments(testutil::slurp(input))) {
+      for (auto& h : b) h.tool = 0;  // rs274 saw no tool in the input: its changes are comments (issue 83)
     }
     a = sorted(a);
     b = sorted(b);

@@ -36,6 +36,7 @@ struct Made {
   double x = 0, y = 0;      // the centre
   double bottom = 0;
   double path_radius = 0;   // 0: drilled
+  int offset = 1;           // the work offset it is drilled in: rs274's G5X index (1 G54 ... 6 G59, 7-9 G59.1-G59.3)
 };
 
 struct Canon {
@@ -75,8 +76,8 @@ inline Canon run_rs274(const std::string& program_path) {
   EXPECT_EQ(r.code, 0) << r.err;
   EXPECT_EQ(r.err.find("error"), std::string::npos) << r.err;
   Canon c;
-  static const std::regex call(R"((STRAIGHT_TRAVERSE|STRAIGHT_FEED|ARC_FEED|SELECT_TOOL|STRAIGHT_PROBE)\(([^)]*)\))");
-  int tool = 0;
+  static const std::regex call(R"((STRAIGHT_TRAVERSE|STRAIGHT_FEED|ARC_FEED|SELECT_TOOL|STRAIGHT_PROBE|SET_G5X_OFFSET)\(([^)]*)\))");
+  int tool = 0, offset = 1;
   double x = 0, y = 0, z = 0;
   bool open = false;  // a hole is being made here
   bool here = false;  // the last hole made is where the spindle is, with this tool (a G83 peck goes on in it)
@@ -93,6 +94,11 @@ inline Canon run_rs274(const std::string& program_path) {
       continue;
     }
     const std::vector<double> v = numbers(m[2]);
+    if (m[1] == "SET_G5X_OFFSET") {
+      offset = static_cast<int>(v[0]);
+      open = here = false;
+      continue;
+    }
     if (m[1] == "STRAIGHT_PROBE") {
       c.probes.push_back(line);
       x = v[0], y = v[1], z = v[2];
@@ -115,7 +121,7 @@ inline Canon run_rs274(const std::string& program_path) {
           if (std::hypot(c.made[k].x - v[2], c.made[k].y - v[3]) < 1e-6) at = k;
         }
         if (at == c.made.size()) {
-          c.made.push_back({tool, v[2], v[3], v[5], r0});
+          c.made.push_back({tool, v[2], v[3], v[5], r0, offset});
           cut.push_back(at);
         }
         c.made[at].bottom = std::min(c.made[at].bottom, v[5]);
@@ -131,7 +137,7 @@ inline Canon run_rs274(const std::string& program_path) {
       else EXPECT_TRUE(open && !cut.empty()) << "a feed in XY outside a milled hole: " << line;
       if (m[1] == "STRAIGHT_TRAVERSE") open = false, cut.clear();
     } else if (m[1] == "STRAIGHT_FEED" && v[2] < z - 1e-9) {
-      if (!open && !here) c.made.push_back({tool, v[0], v[1], v[2], 0.0});
+      if (!open && !here) c.made.push_back({tool, v[0], v[1], v[2], 0.0, offset});
       if (!open) cut.clear();
       open = here = true;
       c.made.back().bottom = std::min(c.made.back().bottom, v[2]);

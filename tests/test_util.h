@@ -107,6 +107,31 @@ inline Run acodrill_run(const std::string& args, const std::string& stdin_text =
   return run(shell_quote(acodrill()) + " " + args, stdin_text);
 }
 
+// Issue 83: a program whose tool changes are comments only (FreeCAD's grbl
+// post writes "( M6 T2 )"; GRBL has no T or M6): no T word in its code.
+// rs274 sees no tool change in it, where acodrill reads the comments' tools;
+// tests/freecad_programs_test.cpp checks those against FreeCAD's own.
+inline bool tools_only_in_comments(const std::string& program) {
+  std::string code;
+  int depth = 0;
+  for (std::size_t i = 0; i < program.size(); ++i) {
+    const char c = program[i];
+    if (c == '(') ++depth;
+    else if (c == ')' && depth > 0) --depth;
+    else if (c == ';' && depth == 0) {
+      while (i < program.size() && program[i] != '\n') ++i;
+      code += '\n';
+    } else if (depth == 0) code += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  }
+  for (std::size_t at = code.find('T'); at != std::string::npos; at = code.find('T', at + 1)) {
+    if (at + 1 < code.size() && std::isdigit(static_cast<unsigned char>(code[at + 1])) &&
+        (at == 0 || !std::isalpha(static_cast<unsigned char>(code[at - 1])))) {
+      return false;
+    }
+  }
+  return true;
+}
+
 // Rows of a holes CSV (x_mm,y_mm,diameter_mm[,layer]) with a header.
 inline aco::HoleSet read_holes_csv(const std::string& text) {
   aco::HoleSet holes;

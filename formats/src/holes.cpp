@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 #include "aco/hole_set.h"
 #include "formats/archive.h"
@@ -40,9 +41,15 @@ void filter(LoadedHoles& out, const InputOptions& options) {
   out.holes = std::move(kept);
   if (out.program) {
     // A program drills what it drills: a position drilled twice stays twice
-    // (plan keeps every hole as the program makes it); it is only counted.
-    aco::HoleSet copy = out.holes;
-    out.drilled_again = aco::remove_duplicate_holes(copy);
+    // (plan keeps every hole as the program makes it); it is only counted,
+    // within each work offset (program_holes' layer "T1 G55").
+    std::map<std::string, aco::HoleSet> by_offset;
+    for (const aco::Hole& h : out.holes) {
+      const std::size_t space = h.layer.find(' ');
+      by_offset[space == std::string::npos ? std::string() : h.layer.substr(space)].push_back(h);
+    }
+    out.drilled_again = 0;
+    for (auto& [offset, holes] : by_offset) out.drilled_again += aco::remove_duplicate_holes(holes);
     return;
   }
   out.duplicates_removed += aco::remove_duplicate_holes(out.holes);
@@ -238,6 +245,37 @@ std::vector<LoadedHoles> parse_sources(const std::string& path, std::string_view
   return board_sources(path, data, options);
 }
 
+namespace {
+
+// Other CAMs' machine files that are not G-code (issue 83: FreeCAD's opensbp,
+// rml and heidenhain posts): named in one line, not read as CSV.
+void refuse_other_machine_files(const std::string& path, std::string_view data) {
+  std::uint32_t line_no = 0;
+  std::string_view first;
+  for_each_line(data.substr(0, 65536), [&](std::uint32_t no, std::string_view line) {
+    line = trim(line);
+    if (line.empty()) return true;
+    line_no = no;
+    first = line;
+    return false;
+  });
+  auto starts = [&](std::string_view p) { return first.substr(0, p.size()) == p; };
+  // OpenSBP: ' comments and two-letter commands with commas ("JZ,16.0", "MX,10").
+  static const char* const kSbpCommands[] = {"JZ,", "J2,", "J3,", "JX,", "JY,", "JS,", "MZ,", "M2,", "M3,", "MX,", "MY,", "MS,", "VS,", "TR,", "SA,", "SR,", "SO,"};
+  const bool sbp_command = std::any_of(std::begin(kSbpCommands), std::end(kSbpCommands), [&](const char* c) { return first.substr(0, 3) == c; });
+  if (starts("'") || sbp_command) throw InputError(path, line_no, "an OpenSBP (ShopBot) part file, not G-code; post the job for a G-code control");
+  // Roland RML-1: HP-GL-like instructions ended by ';' ("PA;", ";IN;", "!MC1;").
+  if (starts("PA;") || starts(";IN;") || starts("IN;") || starts("!MC")) {
+    throw InputError(path, line_no, "a Roland RML file, not G-code; post the job for a G-code control");
+  }
+  if (starts("BEGIN PGM") || (first.size() > 2 && std::isdigit(static_cast<unsigned char>(first[0])) &&
+                              first.find(" BEGIN PGM ") != std::string_view::npos)) {
+    throw InputError(path, line_no, "HEIDENHAIN conversational (Klartext), not G-code; post the job for a G-code control");
+  }
+}
+
+}  // namespace
+
 LoadedHoles parse_holes(const std::string& path, std::string_view data, const InputOptions& options) {
   const std::string shown = path == "-" ? "<stdin>" : path;
   if (data.empty()) throw InputError(shown, 0, "empty file: no holes");
@@ -314,10 +352,12 @@ LoadedHoles parse_holes(const std::string& path, std::string_view data, const In
       break;
     case InputFormat::Csv:
       check_text(shown, data);
+      refuse_other_machine_files(shown, data);
       out = parse_csv(shown, data, options);
       break;
     case InputFormat::Program:
       check_text(shown, data);
+      refuse_other_machine_files(shown, data);
       out = parse_program(shown, data);
       break;
   }

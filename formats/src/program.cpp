@@ -14,7 +14,8 @@ aco::HoleSet program_holes(const gcode::DrillingProgram& program) {
       aco::Hole hole;
       hole.center = h.at;
       hole.diameter = run.diameter_mm.value_or(0.0);
-      hole.layer = "T" + std::to_string(run.tool);
+      // A second fixture's holes are other holes at the same X, Y (issue 83): its offset names them apart.
+      hole.layer = "T" + std::to_string(run.tool) + (run.work_offset == 54 ? "" : " " + gcode::work_offset_text(run.work_offset));
       hole.source_line = h.line;
       holes.push_back(std::move(hole));
     }

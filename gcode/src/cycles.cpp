@@ -11,6 +11,12 @@
 
 namespace gcode {
 
+std::string work_offset_text(int offset) {
+  if (offset > kExtendedWorkOffset) return "G54.1 P" + std::to_string(offset - kExtendedWorkOffset);
+  if (offset >= 591 && offset <= 593) return "G59." + std::to_string(offset - 590);
+  return "G" + std::to_string(offset);
+}
+
 double dwell_seconds(std::string_view p, bool canned_cycle) {
   double v = 0.0;
   auto r = aco::from_chars(p.data(), p.data() + p.size(), v);

@@ -189,6 +189,7 @@ class Reader {
       if (!comment.empty()) {
         parse_tool_comment(comment, selected_tool_, inch_, out_.tool_diameter_mm);
         last_comment_ = std::string(trim(comment));
+        tool_change_from_comment(comment);
       }
       std::string_view line = trim(code);
       if (!line.empty() && line.front() == '/') line = trim(line.substr(1));  // block delete off: run it
@@ -227,6 +228,9 @@ class Reader {
           refuse("a subroutine or flow control (O-word)");
         }
         continue;
+      }
+      if (raw.find("FREECAD-FILENAME-GOES-HERE") != std::string_view::npos) {
+        throw ProgramError(lineno_, "not G-code (FreeCAD's fanuc post writes the output file's name here: delete the line)");
       }
       block(parse_words(line, lineno_));
       if (ended_) end_at(ended_by_, text.substr(std::min(pos, text.size())));
@@ -308,6 +312,68 @@ class Reader {
     }
   }
 
+  // Issue 83: a tool change said only in a comment, in a program with no T
+  // word of its own (GRBL has no M6): FreeCAD's grbl post writes "(Begin
+  // toolchange)" and "( M6 T2 )", its jtech post "(TC2_6.6)" (tool 2, 6.6
+  // wide), and every post the tool controller's label, "(TC: 3.5mm Drill)".
+  // Recognised, blanks and case aside, as the whole comment: "M6 T2", "M06
+  // T2", "T2 M6" (Marlin's "M6 T2.0" too), "TC2" or "TC2_6.6"; and
+  // "TOOLCHANGE", "TOOL CHANGE", "BEGIN TOOLCHANGE" and "TC: label", a change
+  // to the next tool number unless the next such comment names it. A tool
+  // boundary, kept in the output.
+  void tool_change_from_comment(std::string_view comment) {
+    if (t_words_seen_) return;
+    std::string m;
+    for (char c : comment) {
+      if (!std::isspace(static_cast<unsigned char>(c))) m += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    }
+    // A tool number: digits, or Marlin's "T1.0".
+    auto number_at = [&](std::size_t at, int& out) {
+      double v = 0;
+      const auto r = aco::from_chars(m.data() + std::min(at, m.size()), m.data() + m.size(), v);
+      if (r.ec != std::errc() || !(v >= 1 && v <= 100000) || v != std::floor(v)) return std::string::npos;
+      out = static_cast<int>(v);
+      return static_cast<std::size_t>(r.ptr - m.data());
+    };
+    int tool = 0;
+    std::size_t end = std::string::npos;
+    if (m.rfind("M6T", 0) == 0) end = number_at(3, tool);
+    else if (m.rfind("M06T", 0) == 0) end = number_at(4, tool);
+    else if (m.rfind("TC", 0) == 0 && m.rfind("TC:", 0) != 0) end = number_at(2, tool);
+    else if (m.rfind("T", 0) == 0) {
+      end = number_at(1, tool);
+      if (end != std::string::npos) end = m.compare(end, 2, "M6") == 0 ? end + 2 : m.compare(end, 3, "M06") == 0 ? end + 3 : std::string::npos;
+    }
+    if (end != std::string::npos && m.rfind("TC", 0) == 0 && end < m.size()) {
+      // jtech: "TC2_6.6", the tool's diameter after the underscore.
+      double d = 0;
+      const bool read = m[end] == '_' && aco::from_chars(m.data() + end + 1, m.data() + m.size(), d).ptr == m.data() + m.size();
+      if (!read || !(d > 0)) return;
+      out_.tool_diameter_mm[tool] = inch_ ? d * 25.4 : d;
+      end = m.size();
+    }
+    if (end == m.size()) {
+      if (tool != selected_tool_) boundary_ = true;
+      selected_tool_ = tool;
+      comment_tools_ = std::max(comment_tools_, tool);
+      if (!comment_change_pending_) {
+        boundary_ = pending_change_ = true;
+        ++out_.tool_changes;
+      }
+      comment_change_pending_ = false;
+      return;
+    }
+    // "(TC: 3.5mm Drill)": FreeCAD's tool controller's label (the jtech post writes only that); a tool of its own, numbered on.
+    const bool controller = m.rfind("TC:", 0) == 0;
+    if (m == "TOOLCHANGE" || m == "BEGINTOOLCHANGE" || controller) {
+      if (comment_change_pending_) return;  // the same change, said twice
+      boundary_ = pending_change_ = true;
+      ++out_.tool_changes;
+      comment_change_pending_ = true;  // the comment that names the tool is the same change
+      selected_tool_ = ++comment_tools_;
+    }
+  }
+
   [[noreturn]] void refuse(const std::string& what) {
     throw ProgramError(lineno_, what + ": not a drilling program acodrill can reorder");
   }
@@ -323,8 +389,14 @@ class Reader {
     int cycle_code = 0;
     bool g43 = false;
     std::optional<int> h_word;
-    bool g80 = false, dwell = false, home = false, machine = false, change = false, stop = false;
-    std::optional<int> spindle_dir;
+    bool g80 = false, dwell = false, home = false, machine = false, change = false, stop = false, g54_1 = false;
+    std::optional<int> spindle_dir, offset;
+    // Marlin and RepRapFirmware dwell "G4 S3" in seconds; on LinuxCNC, HAAS
+    // and Fanuc G4 takes P alone (S there is a spindle speed, and G4 without
+    // P an error), so a G4 with S and no P can only be the former (issue 83).
+    const bool g4_seconds = std::any_of(words.begin(), words.end(), [](const Word& w) { return w.letter == 'G' && std::lround(w.value * 10) == 40; }) &&
+                            std::none_of(words.begin(), words.end(), [](const Word& w) { return w.letter == 'P'; });
+    std::optional<std::string> dwell_s_word;
     for (const Word& w : words) {
       const int code = static_cast<int>(std::lround(w.value * 10));  // G91.1 -> 911
       switch (w.letter) {
@@ -352,7 +424,11 @@ class Reader {
             case 990: retract_initial_ = false; break;
             case 530: machine = true; break;
             case 280: case 300: home = true; break;
-            case 540: case 550: case 560: case 570: case 580: case 590: work_offset_ = code / 10; break;
+            // A work offset is where the holes after it are: a change starts a run of its own
+            // (issue 83: FreeCAD drills each fixture's holes again in G55 within one tool's run).
+            case 540: case 550: case 560: case 570: case 580: case 590: offset = code / 10; break;
+            case 591: case 592: case 593: offset = code; break;  // G59.1-G59.3 (LinuxCNC)
+            case 541: g54_1 = true; break;                       // G54.1 Pn (HAAS, Fanuc: extended offsets)
             case 100: case 520: case 920: case 921: case 922: case 923: case 510: case 511: case 680: case 682:
               if (options_.drilling_only) refuse("G" + w.text + " changes the coordinate system");
               break;
@@ -389,7 +465,13 @@ class Reader {
             case 70: coolant_ = 7; break;
             case 80: coolant_ = 8; break;
             case 90: coolant_ = 0; break;
-            case 970: case 980: case 990: if (options_.drilling_only) refuse("a subprogram call (M" + w.text + ")"); break;
+            case 970: case 980: if (options_.drilling_only) refuse("a subprogram call (M" + w.text + ")"); break;
+            case 990:
+              // M99 in a main program returns to its start, which a program's last line means
+              // as its end (FreeCAD's centroid post ends so); acodrill reads no subprograms (M98 is refused).
+              ended_ = true;
+              ended_by_ = "M" + w.text;
+              break;
             default: break;
           }
           break;
@@ -401,6 +483,10 @@ class Reader {
         case 'P': wp = w.text; break;
         case 'F': feed_ = w.value * scale(); break;
         case 'S':
+          if (g4_seconds) {
+            dwell_s_word = w.text;
+            break;
+          }
           if (w.value != rpm_) boundary_ = true;
           rpm_ = w.value;
           break;
@@ -426,6 +512,20 @@ class Reader {
       }
     }
     if (g43) length_offset_ = h_word.value_or(selected_tool_);
+    if (g54_1) {
+      // Its P is the offset's number, not a dwell.
+      double number = 0;
+      const bool read = wp && aco::from_chars(wp->data(), wp->data() + wp->size(), number).ec == std::errc();
+      if (!read || number < 1 || number > 300 || number != std::floor(number)) {
+        refuse("G54.1 without P1..P300 (its extended work offset)");
+      }
+      offset = kExtendedWorkOffset + static_cast<int>(number);
+      wp.reset();
+    }
+    if (offset && *offset != work_offset_) {
+      boundary_ = true;
+      work_offset_ = *offset;
+    }
     // Order of execution: tool change, spindle, dwell, then the motion, then stops.
     if (change) {
       boundary_ = true;
@@ -437,16 +537,27 @@ class Reader {
       spindle_ = *spindle_dir;
     }
     if (dwell) {
-      if (hole_.open && !hole_.out) hole_move({ZMove::Dwell, 0.0, 0.0, wp.value_or("0"), dwell_seconds(wp.value_or("0"), false)});
+      if (dwell_s_word) {
+        // Seconds: written back as P with a decimal point, seconds on every control.
+        double seconds = 0;
+        aco::from_chars(dwell_s_word->data(), dwell_s_word->data() + dwell_s_word->size(), seconds);
+        std::string p = *dwell_s_word;
+        if (p.find('.') == std::string::npos) p += ".0";
+        if (hole_.open && !hole_.out) hole_move({ZMove::Dwell, 0.0, 0.0, p, seconds});
+      } else if (hole_.open && !hole_.out) {
+        hole_move({ZMove::Dwell, 0.0, 0.0, wp.value_or("0"), dwell_seconds(wp.value_or("0"), false)});
+      }
       wp.reset();
     }
     if (g80) {
       motion_ = Motion::Rapid;  // what a control does with axis words after G80
       rigid_ = false;
+      cycle_words_cancelled_ = true;
     }
     if (motion) {
       if (*motion == Motion::Cycle && (motion_ != Motion::Cycle || cycle_code != cycle_.code)) {
         cycle_started_ = true;
+        if (cycle_code != cycle_.code) cycle_words_cancelled_ = true;
       }
       if (*motion == Motion::Cycle && cycle_code != cycle_.code) cycle_.code = cycle_code;
       motion_ = *motion;
@@ -543,7 +654,7 @@ class Reader {
       run.length_offset = length_offset_;
       run.coolant = coolant_;
       out_.runs.push_back(std::move(run));
-      boundary_ = pending_change_ = pending_pause_ = false;
+      boundary_ = pending_change_ = pending_pause_ = comment_change_pending_ = false;
     }
     if (!holes_seen_) {
       holes_seen_ = true;
@@ -728,9 +839,16 @@ class Reader {
     if (cycle_started_) {
       initial_z_ = z_;
       cycle_started_ = false;
-      cycle_.q_mm.reset();
-      cycle_.p.clear();
-      cycle_.extra.clear();
+      // Q, P and the others stay in force when the same cycle comes back after
+      // a G0 without a G80 between (FreeCAD's uccnc and fanuc posts state Q on
+      // the first hole only; LinuxCNC and Fanuc keep it); G80 or another
+      // cycle ends them.
+      if (cycle_words_cancelled_) {
+        cycle_.q_mm.reset();
+        cycle_.p.clear();
+        cycle_.extra.clear();
+      }
+      cycle_words_cancelled_ = false;
     }
     // G91: R is measured from the initial plane, Z from R.
     if (wr) cycle_.r_mm = absolute_ ? *wr : initial_z_.value_or(0.0) + *wr;
@@ -743,6 +861,12 @@ class Reader {
     if (wp) cycle_.p = *wp;
     if (!extra.empty()) cycle_.extra = extra;
     if (!drills) return;
+    if ((cycle_.code == 82 || cycle_.code == 89) && cycle_.p.empty()) {
+      // FreeCAD's smoothie, uccnc, dynapath, fablin and centroid posts leave G82's P
+      // out; a control dwells 0 then (LinuxCNC refuses the line): said once, and written.
+      out_.notes.push_back({lineno_, "G" + std::to_string(cycle_.code) + " without P (its dwell) and none in force: the control dwells 0 s; written as P0"});
+      cycle_.p = "0";
+    }
     if (!have_r_) throw ProgramError(lineno_, "canned cycle without an R plane");
     if (!have_z_) throw ProgramError(lineno_, "canned cycle without a depth (Z)");
     if (cycle_.z_mm >= cycle_.r_mm) throw ProgramError(lineno_, "canned cycle depth Z is not below R");
@@ -789,6 +913,9 @@ class Reader {
   OpenHole hole_;
   HoleCycle cycle_;
   bool cycle_started_ = false, have_r_ = false, have_z_ = false;
+  bool cycle_words_cancelled_ = true;
+  bool comment_change_pending_ = false;  // a "Begin toolchange" comment whose tool is not named yet
+  int comment_tools_ = 0;                // the highest tool a comment named or numbered  // by G80 or another cycle: a cycle's Q, P, I, J, K start afresh
   std::optional<double> initial_z_;
   double feed_ = 0.0, rpm_ = 0.0;
   int spindle_ = 0, selected_tool_ = 0, work_offset_ = 54, length_offset_ = 0, coolant_ = 0;

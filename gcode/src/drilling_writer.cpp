@@ -178,7 +178,7 @@ void write_dialect(std::ostream& out, const DrillingProgram& p, const DrillingWr
     if (run.tool > 0) w.line("T" + std::to_string(run.tool) + (run.tool_change ? " M06" : ""));
     if (run.pause) w.line("M00");
     const ProgramHole& first = run.holes.front();
-    std::string move = "G00 G90 G" + std::to_string(run.work_offset) + " X" + w.n(first.at.x) + " Y" + w.n(first.at.y);
+    std::string move = "G00 G90 " + work_offset_text(run.work_offset) + " X" + w.n(first.at.x) + " Y" + w.n(first.at.y);
     if (run.spindle != 0) {
       move += (run.spindle_rpm > 0 ? " S" + rpm_text(run.spindle_rpm) : std::string()) + (run.spindle == 4 ? " M04" : " M03");
     }

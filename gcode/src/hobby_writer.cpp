@@ -93,7 +93,9 @@ void HobbyWriter::start() {
 }
 
 void HobbyWriter::work_offset(int g) {
-  if (g != 54) line("G" + std::to_string(g));
+  // Said when it changes: a program that drills two fixtures goes back to G54 too.
+  if (g != work_offset_) line(work_offset_text(g));
+  work_offset_ = g;
 }
 
 void HobbyWriter::pause_for(const std::string& message, const std::string& short_message, double clear_z_mm) {

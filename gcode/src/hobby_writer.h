@@ -37,7 +37,7 @@ class HobbyWriter {
   // "1.000 MM" or "0.0394 IN": a size as the operator reads it in the program's units.
   std::string size(double mm) const;
   void start();                                 // units, absolute, plane
-  void work_offset(int g);                      // G54..G59 (G54 is the default: not written)
+  void work_offset(int g);                      // written when it changes (G54, the default, is not written first)
   // Spindle off, up to `clear_z`, the message, the pause: the whole
   // instruction in "(MSG, ...)" lines (grblHAL and LinuxCNC show them;
   // Marlin: "; " comments), then the short one on the pause line itself
@@ -88,6 +88,7 @@ class HobbyWriter {
   std::optional<double> z_;      // where the spindle is (program Z, mm); nullopt: not known
   std::optional<double> feed_;   // the F in force
   bool spindle_ = false, coolant_ = false;
+  int work_offset_ = 54;  // in force (work_offset_text)
 };
 
 }  // namespace gcode

@@ -12,7 +12,7 @@ Interpretation interpret(std::string_view program) {
   const DrillingProgram p = read_drilling(program, lenient);
   Interpretation out;
   for (const ToolRun& run : p.runs) {
-    for (const ProgramHole& h : run.holes) out.holes.push_back({run.tool, h.at.x, h.at.y, h.cycle.bottom_mm(), h.line, h.milled_radius_mm.value_or(0.0)});
+    for (const ProgramHole& h : run.holes) out.holes.push_back({run.tool, h.at.x, h.at.y, h.cycle.bottom_mm(), h.line, h.milled_radius_mm.value_or(0.0), run.work_offset});
   }
   out.rapid_xy_mm = p.rapid_xy_mm;
   out.tool_diameter_mm = p.tool_diameter_mm;

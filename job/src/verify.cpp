@@ -164,12 +164,13 @@ std::vector<std::string> check_same_holes(const gcode::Interpretation& run, cons
     int tool;
     double x, y, z;
     std::uint32_t line;
+    int offset;  // the work offset: a second fixture's holes are others at the same X, Y (issue 83)
   };
   std::vector<Key> want, got;
   for (const gcode::ToolRun& r : expected.runs) {
-    for (const gcode::ProgramHole& h : r.holes) want.push_back({r.tool, h.at.x, h.at.y, h.cycle.bottom_mm(), h.line});
+    for (const gcode::ProgramHole& h : r.holes) want.push_back({r.tool, h.at.x, h.at.y, h.cycle.bottom_mm(), h.line, r.work_offset});
   }
-  for (const auto& h : run.holes) got.push_back({h.tool, h.x_mm, h.y_mm, h.bottom_z_mm, h.line});
+  for (const auto& h : run.holes) got.push_back({h.tool, h.x_mm, h.y_mm, h.bottom_z_mm, h.line, h.work_offset});
   auto order = [](const Key& a, const Key& b) { return std::tie(a.x, a.y, a.tool, a.z) < std::tie(b.x, b.y, b.tool, b.z); };
   std::sort(got.begin(), got.end(), order);
   std::vector<char> used(got.size(), 0);
@@ -186,7 +187,7 @@ std::vector<std::string> check_same_holes(const gcode::Interpretation& run, cons
       const std::size_t i = static_cast<std::size_t>(it - got.begin());
       if (used[i] || std::fabs(it->y - w.y) > tol) continue;
       if (!near) near = &*it;
-      if (it->tool == w.tool && std::fabs(it->z - w.z) <= tol) {
+      if (it->tool == w.tool && std::fabs(it->z - w.z) <= tol && it->offset == w.offset) {
         match = i;
         break;
       }
@@ -198,9 +199,11 @@ std::vector<std::string> check_same_holes(const gcode::Interpretation& run, cons
     if (!near) {
       faults.push_back("hole " + at(w) + " of line " + std::to_string(w.line) + " is not drilled");
     } else {
-      faults.push_back("hole " + at(w) + " of line " + std::to_string(w.line) + " (T" + std::to_string(w.tool) + ", Z" +
-                       gcode::format_number(w.z, 3) + ") is drilled with T" + std::to_string(near->tool) + " to Z" +
-                       gcode::format_number(near->z, 3) + " (line " + std::to_string(near->line) + ")");
+      auto in = [](int offset) { return offset == 54 ? std::string() : " in " + gcode::work_offset_text(offset); };
+      faults.push_back("hole " + at(w) + in(w.offset) + " of line " + std::to_string(w.line) + " (T" + std::to_string(w.tool) +
+                       ", Z" + gcode::format_number(w.z, 3) + ") is drilled with T" + std::to_string(near->tool) + " to Z" +
+                       gcode::format_number(near->z, 3) + (near->offset != w.offset ? (in(near->offset).empty() ? " in G54" : in(near->offset)) : "") +
+                       " (line " + std::to_string(near->line) + ")");
       used[static_cast<std::size_t>(near - got.data())] = 1;
     }
   }

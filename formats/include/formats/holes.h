@@ -154,7 +154,7 @@ std::vector<aco::Point2> slot_holes(const Slot& slot, double pitch_mm);
 void apply_slot_policy(LoadedHoles& loaded, const SlotOptions& options, const std::string& path, std::size_t max_holes);
 
 // A drilling program's holes in program order, one per hole drilled (one
-// drilled twice is there twice): layer "T<n>", the diameter the program's
+// drilled twice is there twice): layer "T<n>" ("T<n> G55" in another work offset than G54), the diameter the program's
 // comments give its tool, else 0, and the line that drills it.
 aco::HoleSet program_holes(const gcode::DrillingProgram& program);
 

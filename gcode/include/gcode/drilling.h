@@ -90,7 +90,12 @@ struct ProgramHole {
   std::optional<double> milled_radius_mm;
 };
 
-// One tool's holes between two tool changes (or spindle changes), in program order.
+// A work offset as ToolRun::work_offset holds it: 54..59 (G54-G59), 591..593
+// (G59.1-G59.3), kExtendedWorkOffset + n (G54.1 Pn, HAAS and Fanuc).
+constexpr int kExtendedWorkOffset = 1000;
+std::string work_offset_text(int offset);  // "G55", "G59.1", "G54.1 P7"
+
+// One tool's holes between two tool changes (or spindle or work offset changes), in program order.
 struct ToolRun {
   int tool = 0;                          // the T word in force (0: none)
   std::optional<double> diameter_mm;     // from the program's comments, where it says
@@ -99,7 +104,7 @@ struct ToolRun {
   bool tool_change = false;              // an M6 came before the holes
   bool pause = false;                    // an M0/M1 came before the holes (manual tool change)
   std::string message;                   // the last comment before the holes (what the operator was told)
-  int work_offset = 54;                  // G54..G59 in force
+  int work_offset = 54;                  // the work offset in force (work_offset_text)
   int length_offset = 0;                 // H of the G43 in force (0: none)
   int coolant = 0;                       // 7 (M7), 8 (M8) or 0 (off)
   std::vector<ProgramHole> holes;

@@ -31,6 +31,7 @@ struct DrilledHole {
   // A hole milled by a helix: the radius of the tool's path about the centre
   // (the hole is 2 r plus the tool's diameter); 0: drilled or plunged.
   double milled_radius_mm = 0.0;
+  int work_offset = 54;    // the work offset it is drilled in (drilling.h, work_offset_text)
 };
 
 struct Interpretation {

@@ -1,0 +1,138 @@
+(Exported by FreeCAD)
+(Post Processor: PathScripts.post.KineticNCBeamicon2_post)
+(Output Time:2026-12-06 10:30:43.330532)
+(begin preamble)
+% 
+G17 G21 G40 G49 G80 G90 
+M08
+G21
+(begin operation: G54)
+(machine: not set, mm/min)
+G54
+G0 Z16.000
+(finish operation: G54)
+(begin operation: TC: 3.5mm Drill)
+(machine: not set, mm/min)
+(TC: 3.5mm Drill)
+M05 
+M09M6 T1
+M3 S1200
+(finish operation: TC: 3.5mm Drill)
+(begin operation: Drill1)
+(machine: not set, mm/min)
+(Drill1)
+(Begin Drilling)
+G0 Z16.000
+G90
+G98
+G0 X10.000 Y10.000
+G0 Z14.000
+G81 X10.000 Y10.000 Z0.000 F6000.000 R14.000
+G0 X10.000 Y30.000
+G0 Z14.000
+G81 X10.000 Y30.000 Z0.000 F6000.000 R14.000
+G0 X30.000 Y30.000
+G0 Z14.000
+G81 X30.000 Y30.000 Z0.000 F6000.000 R14.000
+G0 X30.000 Y10.000
+G0 Z14.000
+G81 X30.000 Y10.000 Z0.000 F6000.000 R14.000
+G0 X50.000 Y10.000
+G0 Z14.000
+G81 X50.000 Y10.000 Z0.000 F6000.000 R14.000
+G0 X50.000 Y30.000
+G0 Z14.000
+G81 X50.000 Y30.000 Z0.000 F6000.000 R14.000
+G0 X70.000 Y30.000
+G0 Z14.000
+G81 X70.000 Y30.000 Z0.000 F6000.000 R14.000
+G0 X70.000 Y10.000
+G0 Z14.000
+G81 X70.000 Y10.000 Z0.000 F6000.000 R14.000
+G0 X90.000 Y10.000
+G0 Z14.000
+G81 X90.000 Y10.000 Z0.000 F6000.000 R14.000
+G0 X90.000 Y30.000
+G0 Z14.000
+G81 X90.000 Y30.000 Z0.000 F6000.000 R14.000
+G80
+G0 Z14.000
+G0 Z16.000
+(finish operation: Drill1)
+(begin operation: G54)
+(machine: not set, mm/min)
+G54
+G0 Z16.000
+(finish operation: G54)
+(begin operation: TC: 6.6mm Drill)
+(machine: not set, mm/min)
+(TC: 6.6mm Drill)
+M05 
+M09M6 T2
+M3 S1400
+(finish operation: TC: 6.6mm Drill)
+(begin operation: Drill2)
+(machine: not set, mm/min)
+(Drill2)
+(Begin Drilling)
+G0 Z16.000
+G90
+G98
+G0 X15.000 Y45.000
+G0 Z14.000
+G82 X15.000 Y45.000 Z0.000 F6000.000 R14.000 P0.500
+G0 X15.000 Y67.000
+G0 Z14.000
+G82 X15.000 Y67.000 Z0.000 F6000.000 R14.000 P0.500
+G0 X37.000 Y67.000
+G0 Z14.000
+G82 X37.000 Y67.000 Z0.000 F6000.000 R14.000 P0.500
+G0 X37.000 Y45.000
+G0 Z14.000
+G82 X37.000 Y45.000 Z0.000 F6000.000 R14.000 P0.500
+G0 X59.000 Y45.000
+G0 Z14.000
+G82 X59.000 Y45.000 Z0.000 F6000.000 R14.000 P0.500
+G0 X59.000 Y67.000
+G0 Z14.000
+G82 X59.000 Y67.000 Z0.000 F6000.000 R14.000 P0.500
+G0 X81.000 Y67.000
+G0 Z14.000
+G82 X81.000 Y67.000 Z0.000 F6000.000 R14.000 P0.500
+G0 X81.000 Y45.000
+G0 Z14.000
+G82 X81.000 Y45.000 Z0.000 F6000.000 R14.000 P0.500
+G80
+G0 Z14.000
+G0 Z16.000
+(finish operation: Drill2)
+(begin operation: G54)
+(machine: not set, mm/min)
+G54
+G0 Z16.000
+(finish operation: G54)
+(begin operation: TC: 10mm Drill)
+(machine: not set, mm/min)
+(TC: 10mm Drill)
+M05 
+M09M6 T3
+M3 S1600
+(finish operation: TC: 10mm Drill)
+(begin operation: Drill3)
+(machine: not set, mm/min)
+(Drill3)
+(Begin Drilling)
+G0 Z16.000
+G90
+G98
+G0 X100.000 Y40.000
+G0 Z14.000
+G83 X100.000 Y40.000 Z0.000 F6000.000 Q7.500 R14.000
+G80
+G0 Z14.000
+G0 Z16.000
+(finish operation: Drill3)
+(begin postamble)
+M05 M09
+G17 G90 G80 G40
+M30

@@ -1,0 +1,139 @@
+(Exported by FreeCAD)
+(Post Processor: PathScripts.post.linuxcnc_post)
+(Output Time:2026-12-06 10:30:43.337285)
+(begin preamble)
+G17 G54 G40 G49 G80 G90
+G21
+(begin operation: G54)
+(machine units: mm/min)
+G54 
+G0 Z16.000 
+(finish operation: G54)
+(begin operation: TC: 3.5mm Drill)
+(machine units: mm/min)
+(TC: 3.5mm Drill) 
+M5
+M6 T1 
+G43 H1 
+M3 S1200 
+(finish operation: TC: 3.5mm Drill)
+(begin operation: Drill1)
+(machine units: mm/min)
+(Drill1) 
+(Begin Drilling) 
+G0 Z16.000 
+G90 
+G98 
+G0 X10.000 Y10.000 
+G0 Z14.000 
+G81 X10.000 Y10.000 Z0.000 F6000.000 R14.000 
+G0 X10.000 Y30.000 
+G0 Z14.000 
+G81 X10.000 Y30.000 Z0.000 F6000.000 R14.000 
+G0 X30.000 Y30.000 
+G0 Z14.000 
+G81 X30.000 Y30.000 Z0.000 F6000.000 R14.000 
+G0 X30.000 Y10.000 
+G0 Z14.000 
+G81 X30.000 Y10.000 Z0.000 F6000.000 R14.000 
+G0 X50.000 Y10.000 
+G0 Z14.000 
+G81 X50.000 Y10.000 Z0.000 F6000.000 R14.000 
+G0 X50.000 Y30.000 
+G0 Z14.000 
+G81 X50.000 Y30.000 Z0.000 F6000.000 R14.000 
+G0 X70.000 Y30.000 
+G0 Z14.000 
+G81 X70.000 Y30.000 Z0.000 F6000.000 R14.000 
+G0 X70.000 Y10.000 
+G0 Z14.000 
+G81 X70.000 Y10.000 Z0.000 F6000.000 R14.000 
+G0 X90.000 Y10.000 
+G0 Z14.000 
+G81 X90.000 Y10.000 Z0.000 F6000.000 R14.000 
+G0 X90.000 Y30.000 
+G0 Z14.000 
+G81 X90.000 Y30.000 Z0.000 F6000.000 R14.000 
+G80 
+G0 Z14.000 
+G0 Z16.000 
+(finish operation: Drill1)
+(begin operation: G54)
+(machine units: mm/min)
+G54 
+G0 Z16.000 
+(finish operation: G54)
+(begin operation: TC: 6.6mm Drill)
+(machine units: mm/min)
+(TC: 6.6mm Drill) 
+M5
+M6 T2 
+G43 H2 
+M3 S1400 
+(finish operation: TC: 6.6mm Drill)
+(begin operation: Drill2)
+(machine units: mm/min)
+(Drill2) 
+(Begin Drilling) 
+G0 Z16.000 
+G90 
+G98 
+G0 X15.000 Y45.000 
+G0 Z14.000 
+G82 X15.000 Y45.000 Z0.000 F6000.000 R14.000 P0.500 
+G0 X15.000 Y67.000 
+G0 Z14.000 
+G82 X15.000 Y67.000 Z0.000 F6000.000 R14.000 P0.500 
+G0 X37.000 Y67.000 
+G0 Z14.000 
+G82 X37.000 Y67.000 Z0.000 F6000.000 R14.000 P0.500 
+G0 X37.000 Y45.000 
+G0 Z14.000 
+G82 X37.000 Y45.000 Z0.000 F6000.000 R14.000 P0.500 
+G0 X59.000 Y45.000 
+G0 Z14.000 
+G82 X59.000 Y45.000 Z0.000 F6000.000 R14.000 P0.500 
+G0 X59.000 Y67.000 
+G0 Z14.000 
+G82 X59.000 Y67.000 Z0.000 F6000.000 R14.000 P0.500 
+G0 X81.000 Y67.000 
+G0 Z14.000 
+G82 X81.000 Y67.000 Z0.000 F6000.000 R14.000 P0.500 
+G0 X81.000 Y45.000 
+G0 Z14.000 
+G82 X81.000 Y45.000 Z0.000 F6000.000 R14.000 P0.500 
+G80 
+G0 Z14.000 
+G0 Z16.000 
+(finish operation: Drill2)
+(begin operation: G54)
+(machine units: mm/min)
+G54 
+G0 Z16.000 
+(finish operation: G54)
+(begin operation: TC: 10mm Drill)
+(machine units: mm/min)
+(TC: 10mm Drill) 
+M5
+M6 T3 
+G43 H3 
+M3 S1600 
+(finish operation: TC: 10mm Drill)
+(begin operation: Drill3)
+(machine units: mm/min)
+(Drill3) 
+(Begin Drilling) 
+G0 Z16.000 
+G90 
+G98 
+G0 X100.000 Y40.000 
+G0 Z14.000 
+G83 X100.000 Y40.000 Z0.000 F6000.000 Q7.500 R14.000 
+G80 
+G0 Z14.000 
+G0 Z16.000 
+(finish operation: Drill3)
+(begin postamble)
+M05
+G17 G54 G90 G80 G40
+M2

@@ -1,0 +1,332 @@
+// Issue 83: FreeCAD's programs read right. Its four defects, each on a small
+// program written as FreeCAD's posts write them, each failing before its fix:
+// a work offset changed within one tool's run (two fixtures), a cycle's Q
+// stated on the first hole only, tool changes said only in comments (the
+// grbl and jtech posts), Marlin's G4 S dwell in seconds. The oracle is
+// LinuxCNC's rs274: the input and every program plan writes from it drill
+// the same holes, in the same work offsets, to the same depths.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+#include <tuple>
+
+#include "oracles.h"
+#include "test_util.h"
+
+namespace {
+
+using testutil::shell_quote;
+
+// offset, tool, x, y, bottom (µm)
+using Holes = std::vector<std::tuple<int, int, double, double, double>>;
+
+Holes holes_of(const oracles::Canon& c, bool with_tools = true) {
+  Holes out;
+  auto um = [](double v) { return std::round(v * 1000.0) / 1000.0; };
+  for (const oracles::Made& m : c.made) out.emplace_back(m.offset, with_tools ? m.tool : 0, um(m.x), um(m.y), um(m.bottom));
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+Holes rs274_holes(const std::string& text, bool with_tools = true) {
+  testutil::TempDir t;
+  testutil::spit(t / "p.ngc", text);
+  return holes_of(oracles::run_rs274(t / "p.ngc"), with_tools);
+}
+
+std::string plan(const std::string& input, const std::string& options) {
+  testutil::TempDir t;
+  testutil::spit(t / "in.nc", input);
+  auto r = testutil::acodrill_run("plan " + shell_quote(t / "in.nc") + " -o " + shell_quote(t / "out.nc") + " -q --seed 1 " + options);
+  EXPECT_EQ(r.code, 0) << options << ": " << r.err;
+  return testutil::slurp(t / "out.nc");
+}
+
+// FreeCAD, two fixtures, "order by tool": each tool drills G54's holes, then G55's, with no tool change between.
+const std::string kTwoFixtures =
+    "G21 G90 G17\n"
+    "T1 M06\n"
+    "S1000 M03\n"
+    "G54\n"
+    "G00 Z5\n"
+    "G00 X10 Y10 Z5\n"
+    "G81 X10 Y10 Z-3 R1 F100\n"
+    "X40 Y10\n"
+    "X15 Y30\n"
+    "G80\n"
+    "G55\n"
+    "G00 X10 Y10 Z5\n"
+    "G81 X10 Y10 Z-3 R1 F100\n"
+    "X40 Y10\n"
+    "X15 Y30\n"
+    "G80\n"
+    "G54\n"
+    "T2 M06\n"
+    "S1500 M03\n"
+    "G00 X25 Y20 Z5\n"
+    "G81 X25 Y20 Z-4 R1 F80\n"
+    "G80\n"
+    "G55\n"
+    "G81 X25 Y20 Z-4 R1 F80\n"
+    "G80\n"
+    "M05\n"
+    "M30\n";
+
+TEST(FreeCadPrograms, AWorkOffsetChangedWithinAToolsRunKeepsItsHoles) {
+  const Holes want = rs274_holes(kTwoFixtures);
+  ASSERT_EQ(want.size(), 8u);
+  ASSERT_EQ(std::count_if(want.begin(), want.end(), [](const auto& h) { return std::get<0>(h) == 2; }), 4) << "4 holes in G55";
+  for (const std::string options : {"", "--keep-style", "--dialect linuxcnc", "--dialect fanuc"}) {
+    const std::string out = plan(kTwoFixtures, options);
+    EXPECT_EQ(rs274_holes(out), want) << options << "\n" << out;
+  }
+  // GRBL: no tool changer, the same holes in the same offsets.
+  EXPECT_EQ(rs274_holes(plan(kTwoFixtures, "--dialect grbl"), false), rs274_holes(kTwoFixtures, false));
+  // verify compares the offsets too: the program is right, and wrong with the second fixture's holes in G54.
+  testutil::TempDir t;
+  testutil::spit(t / "in.nc", kTwoFixtures);
+  std::string out = plan(kTwoFixtures, "");
+  testutil::spit(t / "out.nc", out);
+  auto v = testutil::acodrill_run("verify " + shell_quote(t / "out.nc") + " --holes " + shell_quote(t / "in.nc"));
+  EXPECT_EQ(v.code, 0) << v.out << v.err;
+  for (std::size_t at = out.find("G55"); at != std::string::npos; at = out.find("G55")) out.replace(at, 3, "G54");
+  testutil::spit(t / "out.nc", out);
+  v = testutil::acodrill_run("verify " + shell_quote(t / "out.nc") + " --holes " + shell_quote(t / "in.nc"));
+  EXPECT_EQ(v.code, 1) << v.out;
+  EXPECT_THAT(v.out, ::testing::HasSubstr("in G55 of line"));
+}
+
+// FreeCAD's uccnc and fanuc posts: Q and R on the first hole, then each hole
+// "G0 X Y" and "G83 ..." without Q, which Fanuc and UCCNC keep in force until
+// G80 (LinuxCNC does not after a G0, so rs274 cannot read the input itself:
+// the holes are written out here).
+const std::string kModalQ =
+    "G21 G90\n"
+    "T1 M6\n"
+    "S1000 M3\n"
+    "G0 Z15\n"
+    "G0 X50 Y50\n"
+    "G99 G83 X50 Y50 Z-10 Q2.5 R11.5 F100\n"
+    "G0 X10 Y10\n"
+    "G83 X10 Y10 Z-10 F100\n"
+    "G0 X30 Y30\n"
+    "G83 X30 Y30 Z-10 F100\n"
+    "G80\n"
+    "M5\n"
+    "M30\n";
+
+TEST(FreeCadPrograms, AModalQIsStatedWhereverReorderingMovesAHole) {
+  const Holes want = {{1, 1, 10, 10, -10}, {1, 1, 30, 30, -10}, {1, 1, 50, 50, -10}};
+  for (const std::string options : {"", "--keep-style", "--dialect linuxcnc"}) {
+    const std::string out = plan(kModalQ, options);
+    // rs274 refuses a G83 without a Q in force ("Q word missing with g83"): run_rs274 fails the test then.
+    EXPECT_EQ(rs274_holes(out), want) << options << "\n" << out;
+    EXPECT_THAT(out, ::testing::HasSubstr("Q2.5")) << options;
+  }
+}
+
+// FreeCAD's grbl post: no T words and no M6 (GRBL has neither); a tool change is a comment.
+const std::string kGrblPost =
+    "(Exported by FreeCAD)\n"
+    "(Begin preamble)\n"
+    "G17 G90\n"
+    "G21\n"
+    "(Begin operation: TC: 3.5 mm Drill)\n"
+    "(Begin toolchange)\n"
+    "( M6 T1 )\n"
+    "M3 S1000\n"
+    "(Begin operation: Drilling)\n"
+    "G0 Z15\n"
+    "G0 X40 Y10\n"
+    "G0 Z5\n"
+    "G1 Z-3 F100\n"
+    "G0 Z5\n"
+    "G0 X10 Y12\n"
+    "G1 Z-3 F100\n"
+    "G0 Z5\n"
+    "G0 X60 Y10\n"
+    "G1 Z-3 F100\n"
+    "G0 Z15\n"
+    "(Begin operation: TC: 6.6 mm Drill)\n"
+    "(Begin toolchange)\n"
+    "( M6 T2 )\n"
+    "M3 S800\n"
+    "G0 X30 Y30\n"
+    "G0 Z5\n"
+    "G1 Z-5 F80\n"
+    "G0 Z5\n"
+    "G0 X5 Y40\n"
+    "G1 Z-5 F80\n"
+    "G0 Z5\n"
+    "G0 X50 Y42\n"
+    "G1 Z-5 F80\n"
+    "G0 Z15\n"
+    "M5\n"
+    "M2\n";
+
+// Which holes (x, y) each tool of a program drills, as rs274 reads it.
+std::vector<std::vector<std::pair<double, double>>> per_tool(const std::string& text) {
+  testutil::TempDir t;
+  testutil::spit(t / "p.ngc", text);
+  const oracles::Canon c = oracles::run_rs274(t / "p.ngc");
+  std::vector<std::vector<std::pair<double, double>>> out;
+  int tool = -1;
+  for (const oracles::Made& m : c.made) {
+    if (out.empty() || m.tool != tool) out.emplace_back();
+    tool = m.tool;
+    out.back().emplace_back(std::round(m.x * 1000) / 1000, std::round(m.y * 1000) / 1000);
+  }
+  for (auto& run : out) std::sort(run.begin(), run.end());
+  return out;
+}
+
+TEST(FreeCadPrograms, ToolChangesSaidOnlyInCommentsAreToolBoundaries) {
+  const std::vector<std::vector<std::pair<double, double>>> want = {{{10, 12}, {40, 10}, {60, 10}}, {{5, 40}, {30, 30}, {50, 42}}};
+  // HAAS: each of the post's tools a tool of its own, T1 then T2, the holes of each its own.
+  std::string out = plan(kGrblPost, "");
+  EXPECT_EQ(per_tool(out), want) << out;
+  EXPECT_THAT(out, ::testing::HasSubstr("T2 M06"));
+  // Kept in the program's own style: the comments stay, between the tools' holes.
+  out = plan(kGrblPost, "--keep-style");
+  const std::size_t change = out.find("( M6 T2 )");
+  ASSERT_NE(change, std::string::npos) << out;
+  for (const char* t1 : {"X10.000 Y12.000", "X40.000 Y10.000", "X60.000 Y10.000"}) EXPECT_LT(out.find(t1), change) << t1 << "\n" << out;
+  for (const char* t2 : {"X30.000 Y30.000", "X5.000 Y40.000", "X50.000 Y42.000"}) EXPECT_GT(out.find(t2), change) << t2 << "\n" << out;
+  // The jtech post names the tool and its diameter in one label.
+  std::string jtech = kGrblPost;
+  for (const auto& [from, to] : {std::pair{std::string("( M6 T1 )"), std::string("(TC1_3.5)")}, {"( M6 T2 )", "(TC2_6.6)"}}) {
+    jtech.replace(jtech.find(from), from.size(), to);
+  }
+  for (const std::string begin : {"(Begin toolchange)\n"}) {
+    for (std::size_t at = jtech.find(begin); at != std::string::npos; at = jtech.find(begin)) jtech.erase(at, begin.size());
+  }
+  out = plan(jtech, "");
+  EXPECT_EQ(per_tool(out), want) << out;
+  EXPECT_THAT(out, ::testing::HasSubstr("T2 D=6.600 MM"));
+}
+
+// Marlin (and RepRapFirmware): G4 S is a dwell in seconds, not a spindle speed.
+const std::string kMarlin =
+    "G21\n"
+    "G90\n"
+    "M3 S255\n"
+    "G4 S3\n"
+    "G0 Z5\n"
+    "G0 X30 Y10\n"
+    "G1 Z-2 F100\n"
+    "G4 S0.5\n"
+    "G0 Z5\n"
+    "G0 X10 Y10\n"
+    "G1 Z-2 F100\n"
+    "G4 S0.5\n"
+    "G0 Z5\n"
+    "M5\n";
+
+TEST(FreeCadPrograms, MarlinsG4SIsSecondsNotASpindleSpeed) {
+  for (const std::string options : {"", "--dialect linuxcnc"}) {
+    const std::string out = plan(kMarlin, options);
+    EXPECT_THAT(out, ::testing::Not(::testing::HasSubstr("S3 ")));
+    EXPECT_THAT(out, ::testing::HasSubstr("S255"));
+    testutil::TempDir t;
+    testutil::spit(t / "p.ngc", out);
+    testutil::spit(t / "tool.tbl", "T1 P1 Z0 D1\n");
+    const auto r = testutil::rs274_in(t.path(), "-t tool.tbl -g p.ngc");
+    // Half a second over each hole, as the input dwells.
+    std::size_t dwells = 0;
+    for (std::size_t at = r.out.find("DWELL(0.5000)"); at != std::string::npos; at = r.out.find("DWELL(0.5000)", at + 1)) ++dwells;
+    EXPECT_EQ(dwells, 2u) << options << "\n" << out << r.out;
+  }
+}
+
+}  // namespace
+
+// The corpus (tests/data/freecad/make_corpus.py): real Jobs made headless by
+// FreeCAD 0.20, posted by each post it ships. The oracle is FreeCAD's own
+// list of the Job's holes (PART.holes.csv: fixture, tool, centre, depth).
+namespace corpus {
+
+const char* const kGcodePosts[] = {"KineticNCBeamicon2", "centroid", "dynapath", "fablin", "fanuc", "grbl", "jtech",
+                                   "linuxcnc", "mach3_mach4", "marlin", "rrf", "smoothie", "uccnc"};
+const char* const kParts[] = {"plate3", "fixtures2"};
+
+Holes freecad_holes(const std::string& part, bool with_tools) {
+  Holes out;
+  std::istringstream in(testutil::slurp(testutil::data("freecad/" + part + ".holes.csv")));
+  std::string line;
+  std::getline(in, line);
+  while (std::getline(in, line)) {
+    char fixture[8] = {};
+    int tool = 0;
+    double x = 0, y = 0, bottom = 0;
+    if (std::sscanf(line.c_str(), "G%7[^,],%d,%lf,%lf,%lf", fixture, &tool, &x, &y, &bottom) != 5) continue;
+    out.emplace_back(std::atoi(fixture) - 53, with_tools ? tool : 0, x, y, bottom);
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+bool rs274_reads(const std::string& text) {
+  testutil::TempDir t;
+  testutil::spit(t / "p.ngc", text);
+  testutil::spit(t / "tool.tbl", "T1 P1 Z0 D1\nT2 P2 Z0 D1\nT3 P3 Z0 D1\n");
+  const auto r = testutil::rs274_in(t.path(), "-t tool.tbl -g p.ngc");
+  return r.code == 0 && r.out.find("rror") == std::string::npos && r.err.find("rror") == std::string::npos;
+}
+
+}  // namespace corpus
+
+TEST(FreeCadPrograms, EveryGcodePostsProgramIsReorderedToFreeCadsOwnHoles) {
+  for (const char* post : corpus::kGcodePosts) {
+    for (const char* part : corpus::kParts) {
+      SCOPED_TRACE(std::string(post) + "/" + part);
+      std::string input = testutil::slurp(testutil::data(std::string("freecad/") + post + "/" + part + ".nc"));
+      ASSERT_FALSE(input.empty());
+      if (std::string(post) == "fanuc") {
+        // FreeCAD's fanuc post writes the file's name as line 3: refused, naming it; without it, read.
+        testutil::TempDir t;
+        testutil::spit(t / "in.nc", input);
+        auto r = testutil::acodrill_run("plan " + shell_quote(t / "in.nc") + " -o " + shell_quote(t / "out.nc"));
+        EXPECT_EQ(r.code, 2);
+        EXPECT_THAT(r.err, ::testing::HasSubstr(":3: not G-code (FreeCAD's fanuc post writes the output file's name here"));
+        input.erase(input.find("\n", input.find("FREECAD-FILENAME")) == std::string::npos ? 0 : input.rfind('\n', input.find("FREECAD-FILENAME")) + 1,
+                    input.find('\n', input.find("FREECAD-FILENAME")) - input.rfind('\n', input.find("FREECAD-FILENAME")));
+      }
+      // fablin marks nothing between tools: its holes are right, its tools one run.
+      const bool tools_marked = std::string(post) != "fablin";
+      const Holes want = corpus::freecad_holes(part, tools_marked);
+      const std::string out = plan(input, "");
+      EXPECT_EQ(rs274_holes(out, tools_marked), want) << out;
+      const std::string kept = plan(input, "--keep-style");
+      testutil::TempDir t;
+      testutil::spit(t / "in.nc", input);
+      testutil::spit(t / "out.nc", kept);
+      auto v = testutil::acodrill_run("verify " + shell_quote(t / "out.nc") + " --holes " + shell_quote(t / "in.nc"));
+      EXPECT_EQ(v.code, 0) << v.out << kept;
+      // Where LinuxCNC reads the post's own style, it reads the kept program to FreeCAD's holes too.
+      // (Tools by number only where the post writes T words: grbl and jtech keep theirs in comments, which verify checked.)
+      if (corpus::rs274_reads(input)) {
+        EXPECT_EQ(rs274_holes(kept, false), corpus::freecad_holes(part, false)) << kept;
+      }
+    }
+  }
+}
+
+TEST(FreeCadPrograms, PostsThatWriteNoGcodeAreNamedInOneLine) {
+  testutil::TempDir t;
+  for (const auto& [post, says] : {std::pair{"opensbp", "an OpenSBP (ShopBot) part file, not G-code"},
+                                   {"rml", "a Roland RML file, not G-code"}}) {
+    auto r = testutil::acodrill_run("plan " + shell_quote(testutil::data(std::string("freecad/") + post + "/plate3.nc")) + " -o " +
+                                    shell_quote(t / "out.nc"));
+    EXPECT_EQ(r.code, 2) << post;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_THAT(r.err, ::testing::HasSubstr(says));
+  }
+  testutil::spit(t / "h.h", "0 BEGIN PGM PLATE MM\n1 BLK FORM 0.1 Z X+0 Y+0 Z-10\n2 END PGM PLATE MM\n");
+  auto r = testutil::acodrill_run("plan " + shell_quote(t / "h.h") + " -o " + shell_quote(t / "out.nc"));
+  EXPECT_EQ(r.code, 2);
+  EXPECT_THAT(r.err, ::testing::HasSubstr("HEIDENHAIN conversational (Klartext), not G-code"));
+}
