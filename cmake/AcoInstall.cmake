@@ -71,6 +71,10 @@ install(DIRECTORY ${PROJECT_SOURCE_DIR}/plugins/kicad/acodrill_kicad DESTINATION
 install(FILES ${PROJECT_SOURCE_DIR}/plugins/kicad/kicad_loader/acodrill_kicad_plugin.py
         DESTINATION share/kicad/scripting/plugins)
 
+# The FreeCAD post-processor (plugins/freecad, issue 83): copied into FreeCAD's
+# macro folder by the user, as its header says.
+install(FILES ${PROJECT_SOURCE_DIR}/plugins/freecad/acodrill_post.py DESTINATION share/acodrill/freecad)
+
 # Debian package (scripts/package): dependencies computed by dpkg-shlibdeps.
 set(CPACK_GENERATOR DEB)
 set(CPACK_PACKAGE_NAME acodrill)

@@ -15,7 +15,8 @@ TEST_PACKAGES=(python3-ezdxf librsvg2-bin zip)
 # Headless chromium prints the setup sheet to PDF and pdftotext reads it back.
 # KiCad 6's pcbnew Python module and its demo boards test the KiCad plugin
 # (its dialog in Xvfb); KiCad's PCM schema is checked with python3-jsonschema.
-TEST_PACKAGES_NO_RECOMMENDS=(linuxcnc-uspace gerbv chromium poppler-utils kicad kicad-demos python3-jsonschema xvfb xauth)
+# FreeCAD 0.20's freecadcmd runs acodrill as its post-processor (issue 83).
+TEST_PACKAGES_NO_RECOMMENDS=(linuxcnc-uspace gerbv chromium poppler-utils kicad kicad-demos python3-jsonschema xvfb xauth freecad)
 
 missing_packages() {
   local p

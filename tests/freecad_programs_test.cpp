@@ -187,7 +187,7 @@ std::vector<std::vector<std::pair<double, double>>> per_tool(const std::string& 
 TEST(FreeCadPrograms, ToolChangesSaidOnlyInCommentsAreToolBoundaries) {
   const std::vector<std::vector<std::pair<double, double>>> want = {{{10, 12}, {40, 10}, {60, 10}}, {{5, 40}, {30, 30}, {50, 42}}};
   // HAAS: each of the post's tools a tool of its own, T1 then T2, the holes of each its own.
-  std::string out = plan(kGrblPost, "");
+  std::string out = plan(kGrblPost, "--dialect haas");
   EXPECT_EQ(per_tool(out), want) << out;
   EXPECT_THAT(out, ::testing::HasSubstr("T2 M06"));
   // Kept in the program's own style: the comments stay, between the tools' holes.
@@ -204,7 +204,7 @@ TEST(FreeCadPrograms, ToolChangesSaidOnlyInCommentsAreToolBoundaries) {
   for (const std::string begin : {"(Begin toolchange)\n"}) {
     for (std::size_t at = jtech.find(begin); at != std::string::npos; at = jtech.find(begin)) jtech.erase(at, begin.size());
   }
-  out = plan(jtech, "");
+  out = plan(jtech, "--dialect haas");
   EXPECT_EQ(per_tool(out), want) << out;
   EXPECT_THAT(out, ::testing::HasSubstr("T2 D=6.600 MM"));
 }
@@ -227,7 +227,12 @@ const std::string kMarlin =
     "M5\n";
 
 TEST(FreeCadPrograms, MarlinsG4SIsSecondsNotASpindleSpeed) {
-  for (const std::string options : {"", "--dialect linuxcnc"}) {
+  // In its own style (the default for a program) the dwell stays Marlin's, seconds.
+  const std::string own = plan(kMarlin, "");
+  EXPECT_THAT(own, ::testing::HasSubstr("G4 S0.5"));
+  EXPECT_THAT(own, ::testing::Not(::testing::HasSubstr("P0.5")));
+  EXPECT_EQ(own, plan(kMarlin, "--keep-style"));
+  for (const std::string options : {"--dialect haas", "--dialect linuxcnc"}) {
     const std::string out = plan(kMarlin, options);
     EXPECT_THAT(out, ::testing::Not(::testing::HasSubstr("S3 ")));
     EXPECT_THAT(out, ::testing::HasSubstr("S255"));
@@ -298,9 +303,10 @@ TEST(FreeCadPrograms, EveryGcodePostsProgramIsReorderedToFreeCadsOwnHoles) {
       // fablin marks nothing between tools: its holes are right, its tools one run.
       const bool tools_marked = std::string(post) != "fablin";
       const Holes want = corpus::freecad_holes(part, tools_marked);
-      const std::string out = plan(input, "");
+      const std::string out = plan(input, "--dialect haas");
       EXPECT_EQ(rs274_holes(out, tools_marked), want) << out;
-      const std::string kept = plan(input, "--keep-style");
+      const std::string kept = plan(input, "");  // a program comes back in its own style
+      EXPECT_EQ(kept, plan(input, "--keep-style"));
       testutil::TempDir t;
       testutil::spit(t / "in.nc", input);
       testutil::spit(t / "out.nc", kept);

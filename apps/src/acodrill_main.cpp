@@ -178,7 +178,7 @@ int main(int argc, char** argv) {
       "                                                            plated and non-plated holes, one program\n"
       "  acodrill plan board.drl -o panel.nc --panel 3x2 --pitch 60,40 --batch 50\n"
       "                                                            six boards a panel, the time for 50 panels\n"
-      "  acodrill plan pcb2gcode-drill.ngc -o shorter.ngc --keep-style\n"
+      "  acodrill plan pcb2gcode-drill.ngc -o shorter.ngc\n"
       "                                                            another CAM's program, its holes reordered per tool\n"
       "  acodrill plan job.tgz -o job.nc                           a board house's ODB++ job (a folder, .tgz or .zip;\n"
       "                                                            --step NAME), or IPC-2581: plated and non-plated apart\n"
@@ -209,7 +209,8 @@ int main(int argc, char** argv) {
                        "router: grbl); grbl or marlin without --machine plans for the router class");
   plan_cmd->add_flag("--keep-style", ps.keep_style,
                      "Program input: keep the input's own lines and style (canned stays canned, expanded stays "
-                     "expanded; line numbers renumbered), rewriting only where its holes are drilled");
+                     "expanded; line numbers renumbered), rewriting only where its holes are drilled. The default "
+                     "for a program unless --dialect (or --units) is given");
   plan_cmd->add_option("--min-spacing", ps.min_spacing_mm,
                        "Program input: holes of a tool closer than MM (or than the drill, where the program names "
                        "its diameter) overlap and are drilled together in their input order (default 0)")

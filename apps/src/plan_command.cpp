@@ -82,6 +82,11 @@ void print_summary(const PlanArgs& a, const job::Result& r) {
   if (r.program_input) {
     std::fprintf(stderr, "  coordinates as in the input program (its work offset); holes X%s..%s Y%s..%s mm\n",
                  f3(e.x_min).c_str(), f3(e.x_max).c_str(), f3(e.y_min).c_str(), f3(e.y_max).c_str());
+    if (r.program_input->style == "keep") {
+      std::fprintf(stderr, "  written in the input program's own style (--keep-style; --dialect NAME writes another)\n");
+    } else {
+      std::fprintf(stderr, "  written for %s (--dialect)\n", gcode::to_string(r.dialect));
+    }
     return;
   }
   std::fprintf(stderr, "  program zero: %s (drawing X%s Y%s mm); holes X%s..%s Y%s..%s mm\n",

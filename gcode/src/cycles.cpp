@@ -28,9 +28,9 @@ double dwell_seconds(std::string_view p, bool canned_cycle) {
 std::vector<ZMove> expand_cycle(const HoleCycle& c, double retract_z_mm, std::uint32_t line,
                                 std::optional<double> part_top_z_mm) {
   constexpr double kPeckClearance = 0.254;  // LinuxCNC's G83/G73 clearance: 0.010 in
-  auto rapid = [](double z) { return ZMove{ZMove::Rapid, z, 0.0, "", 0.0}; };
-  auto feed = [&](double z) { return ZMove{ZMove::Feed, z, c.feed_mm_min, "", 0.0}; };
-  auto dwell = [&]() { return ZMove{ZMove::Dwell, 0.0, 0.0, c.p, dwell_seconds(c.p, true)}; };
+  auto rapid = [](double z) { return ZMove{ZMove::Rapid, z, 0.0, "", 0.0, ""}; };
+  auto feed = [&](double z) { return ZMove{ZMove::Feed, z, c.feed_mm_min, "", 0.0, ""}; };
+  auto dwell = [&]() { return ZMove{ZMove::Dwell, 0.0, 0.0, c.p, dwell_seconds(c.p, true), ""}; };
   std::vector<ZMove> m{rapid(c.r_mm)};
   const bool pecks = (c.code == 83 || c.code == 73) && c.q_mm && *c.q_mm > 0;
   switch (c.code) {

@@ -543,9 +543,9 @@ class Reader {
         aco::from_chars(dwell_s_word->data(), dwell_s_word->data() + dwell_s_word->size(), seconds);
         std::string p = *dwell_s_word;
         if (p.find('.') == std::string::npos) p += ".0";
-        if (hole_.open && !hole_.out) hole_move({ZMove::Dwell, 0.0, 0.0, p, seconds});
+        if (hole_.open && !hole_.out) hole_move({ZMove::Dwell, 0.0, 0.0, p, seconds, "S" + *dwell_s_word});
       } else if (hole_.open && !hole_.out) {
-        hole_move({ZMove::Dwell, 0.0, 0.0, wp.value_or("0"), dwell_seconds(wp.value_or("0"), false)});
+        hole_move({ZMove::Dwell, 0.0, 0.0, wp.value_or("0"), dwell_seconds(wp.value_or("0"), false), ""});
       }
       wp.reset();
     }
@@ -699,7 +699,7 @@ class Reader {
         // Inside a hole being milled (along a slot, to the centre): the cut goes on.
         xy_ = to;
         if (nz) {
-          hole_move({ZMove::Feed, *nz, feed_, "", 0.0});
+          hole_move({ZMove::Feed, *nz, feed_, "", 0.0, ""});
           z_ = nz;
         }
         return;
@@ -719,7 +719,7 @@ class Reader {
       if (nz && (!z_ || *nz > *z_)) z_ = nz;
       rapid_to(to);
       if (nz && *nz < z_.value_or(std::numeric_limits<double>::infinity())) {
-        approach_.push_back({ZMove::Feed, *nz, feed_, "", 0.0});
+        approach_.push_back({ZMove::Feed, *nz, feed_, "", 0.0, ""});
         z_ = nz;
       }
       return;
@@ -737,7 +737,7 @@ class Reader {
       if (nz && (!z_ || *nz > *z_)) z_ = nz;
       rapid_to(to);
       if (nz && *nz < z_.value_or(std::numeric_limits<double>::infinity())) {
-        approach_.push_back({ZMove::Rapid, *nz, 0.0, "", 0.0});
+        approach_.push_back({ZMove::Rapid, *nz, 0.0, "", 0.0, ""});
         z_ = nz;
       }
       return;
@@ -764,11 +764,11 @@ class Reader {
         feed_start_z_ = *z_;
         approach_.clear();
       }
-      hole_move({ZMove::Feed, *nz, feed_, "", 0.0});
+      hole_move({ZMove::Feed, *nz, feed_, "", 0.0, ""});
       z_ = nz;
       return;
     }
-    const ZMove m{motion_ == Motion::Feed ? ZMove::Feed : ZMove::Rapid, *nz, feed_, "", 0.0};
+    const ZMove m{motion_ == Motion::Feed ? ZMove::Feed : ZMove::Rapid, *nz, feed_, "", 0.0, ""};
     z_ = nz;
     if (!hole_.open) {
       approach_.push_back(m);
@@ -828,7 +828,7 @@ class Reader {
     }
     xy_ = to;
     if (nz) {
-      hole_move({ZMove::Feed, *nz, feed_, "", 0.0});
+      hole_move({ZMove::Feed, *nz, feed_, "", 0.0, ""});
       z_ = nz;
     }
   }

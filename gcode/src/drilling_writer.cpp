@@ -112,7 +112,10 @@ class Writer {
               line(text);
               break;
             }
-            case ZMove::Dwell: line("G04 P" + m.dwell); break;
+            case ZMove::Dwell:
+              // In the input's own style a Marlin "G4 S3" stays so (its G4 P counts milliseconds).
+              line(s_.keep_style && !m.dwell_as_written.empty() ? "G4 " + m.dwell_as_written : "G04 P" + m.dwell);
+              break;
           }
           if (m.kind != ZMove::Dwell) z = m.z_mm;
         }

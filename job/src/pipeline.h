@@ -69,6 +69,9 @@ struct PlanJob::Impl {
   // reordered and written in its own style or a dialect.
   void prepare_program();
   void reorder_and_write();
+  // A program input is written back in its own style (--keep-style) unless
+  // --dialect names one, or --units asks for other units (a rewrite), issue 83.
+  bool keeps_style() const { return s.keep_style || (s.dialect.empty() && s.units.empty()); }
 
   PlanSettings s;
   ProgressFn on_progress;

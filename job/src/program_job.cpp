@@ -40,7 +40,7 @@ void PlanJob::Impl::prepare_program() {
     throw UserError(source, 0, "no holes to drill: the program has no drilling move (no canned cycle, no feed down in Z)");
   }
   const bool inch = s.units.empty() ? input.inch : o.program.units == gcode::Units::Inch;
-  if (s.keep_style && inch != input.inch) {
+  if (keeps_style() && inch != input.inch) {
     throw UserError("--keep-style keeps the input's units (" + std::string(input.inch ? "inch" : "mm") + "); drop --units");
   }
   if (inch != input.inch) {
@@ -70,7 +70,7 @@ void PlanJob::Impl::reorder_and_write() {
   ws.decimals = std::clamp(input.decimals + (inch == input.inch ? 0 : inch ? 1 : -1), inch ? 4 : 3, 6);
   ws.program_number = s.program_number;
   ws.program_name = loaded.name;
-  ws.keep_style = s.keep_style;
+  ws.keep_style = keeps_style();
   ws.spindle_start_s = o.program.spindle_start_s;
   ws.travel_feed_mm_min = o.program.travel_feed_mm_min;
   ws.header_comments = {
@@ -99,7 +99,7 @@ void PlanJob::Impl::reorder_and_write() {
   r.placement.origin = planning::Origin{planning::OriginKind::Drawing, {}};
   r.placement.extent = planning::extent_of(r.holes);
   r.program_input = ReportContext::ProgramInput{r.plan.groups.size(), reordered.overlapping_holes,
-                                                reordered.overlap_groups, s.keep_style ? "keep" : "dialect"};
+                                                reordered.overlap_groups, keeps_style() ? "keep" : "dialect"};
   ReportContext ctx{source, s.program_name, r.placement, loaded.name, &loaded, {}, 1, 1, r.program_input};
   ctx.dialect = o.program.dialect;
   detail::make_outputs(r, s, o, ctx, planning::to_passes(r.holes, r.plan, o.machine));

@@ -31,8 +31,9 @@ struct ZMove {
   enum Kind { Rapid, Feed, Dwell } kind = Rapid;
   double z_mm = 0.0;           // Rapid, Feed: absolute work Z
   double feed_mm_min = 0.0;    // Feed: the feed rate in force
-  std::string dwell;           // Dwell: P as written ("1.0", "500")
+  std::string dwell;           // Dwell: P as written ("1.0", "500"); a Marlin "G4 S3": "3.0", seconds
   double dwell_s = 0.0;        // Dwell: the same in seconds (dwell_seconds)
+  std::string dwell_as_written;  // Dwell: Marlin's "S3" (kept so in the input's own style); empty: P
 };
 
 // A dwell's P as seconds. With a decimal point P is seconds on every control;
