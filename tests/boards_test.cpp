@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <sstream>
 #include <tuple>
 #include <vector>
 
@@ -154,6 +155,26 @@ TEST(Boards, PlanAndVerifyAFolderATgzAndAZip) {
                                   shell_quote(t / "r.json") + " --iterations 30");
   ASSERT_EQ(r.code, 0) << r.err;
   const std::string json = slurp(t / "r.json");
+  // A board, as its drill files are: the same depth through 1.6 mm of PCB, the same speeds.
+  const std::string drl = data("boards/pic_programmer/pic_programmer-PTH.drl"), npth = data("boards/pic_programmer/pic_programmer-NPTH.drl");
+  auto e = testutil::acodrill_run("plan " + shell_quote(drl) + " " + shell_quote(npth) + " -o " + shell_quote(t / "e.nc") + " --iterations 30");
+  ASSERT_EQ(e.code, 0) << e.err;
+  auto cycle_words = [](const std::string& program) {
+    std::vector<std::string> out;
+    std::istringstream in(program);
+    for (std::string line; std::getline(in, line);) {
+      if (line.find(" G8") == std::string::npos && line.rfind("G8", 0) != 0) continue;
+      std::string words;
+      for (const char* w : {" Z", " R", " F", " Q"}) {
+        const std::size_t at = line.find(w);
+        if (at != std::string::npos) words += line.substr(at, line.find(' ', at + 1) - at);
+      }
+      out.push_back(words);
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+  };
+  EXPECT_EQ(cycle_words(slurp(t / "p.nc")), cycle_words(slurp(t / "e.nc")));
   EXPECT_THAT(json, ::testing::ContainsRegex("pic_programmer.odb.zip \\(plated\\)\"[^}]*\"holes\": *245"));
   EXPECT_THAT(json, ::testing::ContainsRegex("pic_programmer.odb.zip \\(non-plated\\)\"[^}]*\"holes\": *6"));
 }

@@ -221,7 +221,7 @@ int main(int argc, char** argv) {
                        "A built-in machine class (acodrill machines: vf2, router, pcb-drill, pcb-proto) or a profile file (JSON): rapids, "
                        "acceleration, spindle range, tool change, travel; sets the time estimate, the generated "
                        "tools' speeds and the default dialect. Default: vf2");
-  plan_cmd->add_option("--material", ps.material, "steel | aluminium | pcb: feeds and speeds of generated tools (default steel; pcb for Excellon and Gerber input)");
+  plan_cmd->add_option("--material", ps.material, "steel | aluminium | pcb: feeds and speeds of generated tools (default steel; pcb for Excellon, Gerber, IPC-2581 and ODB++ input)");
   plan_cmd->add_option("--thickness", ps.thickness_mm, "Part thickness in mm for generated tools (default 6.35, or 1.6 for pcb)");
   plan_cmd->add_flag("--spot", ps.spot,
                      "Spot every drilled hole first with one 90-degree spot drill (6 mm; 10 mm when a hole is larger), "

@@ -190,7 +190,8 @@ void PlanJob::Impl::prepare_holes() {
   // PCB drill data is a circuit board unless the user says otherwise: PCB
   // feeds and speeds through a 1.6 mm board, not a quarter inch of steel.
   const bool board = std::any_of(r.inputs.parts.begin(), r.inputs.parts.end(), [](const formats::LoadedHoles& p) {
-    return p.format == formats::InputFormat::Excellon || p.format == formats::InputFormat::Gerber;
+    return p.format == formats::InputFormat::Excellon || p.format == formats::InputFormat::Gerber ||
+           p.format == formats::InputFormat::Ipc2581 || p.format == formats::InputFormat::Odb;
   });
   if (s.material.empty() && board) o.material = planning::Material::Pcb;
   o.thickness_mm = s.thickness_mm.value_or(o.material == planning::Material::Pcb ? 1.6 : 6.35);
