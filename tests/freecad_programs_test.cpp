@@ -127,6 +127,23 @@ TEST(FreeCadPrograms, AModalQIsStatedWhereverReorderingMovesAHole) {
     EXPECT_EQ(rs274_holes(out), want) << options << "\n" << out;
     EXPECT_THAT(out, ::testing::HasSubstr("Q2.5")) << options;
   }
+  // verify compares pecks and dwells: the right program passes, one with other pecks or another dwell does not.
+  testutil::TempDir t;
+  const std::string with_dwell = std::string(kModalQ).replace(kModalQ.find("G83 X10 Y10"), 3, "G82").replace(kModalQ.find("G83 X30"), 3, "G82");
+  for (const std::string& input : {kModalQ, with_dwell}) {
+    std::string out = plan(input, "--dialect linuxcnc");
+    testutil::spit(t / "in.nc", input);
+    testutil::spit(t / "out.nc", out);
+    auto v = testutil::acodrill_run("verify " + shell_quote(t / "out.nc") + " --holes " + shell_quote(t / "in.nc"));
+    EXPECT_EQ(v.code, 0) << v.out << out;
+  }
+  std::string out = plan(kModalQ, "--dialect linuxcnc");
+  out.replace(out.find("Q2.5"), 4, "Q1.0");
+  testutil::spit(t / "in.nc", kModalQ);
+  testutil::spit(t / "out.nc", out);
+  auto v = testutil::acodrill_run("verify " + shell_quote(t / "out.nc") + " --holes " + shell_quote(t / "in.nc"));
+  EXPECT_EQ(v.code, 1) << v.out;
+  EXPECT_THAT(v.out, ::testing::HasSubstr("with pecks of 1.000 where the input dwells 0.000 s with pecks of 2.500"));
 }
 
 // FreeCAD's grbl post: no T words and no M6 (GRBL has neither); a tool change is a comment.

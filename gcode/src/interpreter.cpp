@@ -12,7 +12,14 @@ Interpretation interpret(std::string_view program) {
   const DrillingProgram p = read_drilling(program, lenient);
   Interpretation out;
   for (const ToolRun& run : p.runs) {
-    for (const ProgramHole& h : run.holes) out.holes.push_back({run.tool, h.at.x, h.at.y, h.cycle.bottom_mm(), h.line, h.milled_radius_mm.value_or(0.0), run.work_offset});
+    for (const ProgramHole& h : run.holes) {
+      DrilledHole d{run.tool, h.at.x, h.at.y, h.cycle.bottom_mm(), h.line, h.milled_radius_mm.value_or(0.0), run.work_offset, {}, {}};
+      if (h.cycle.code != 0) {
+        d.peck_mm = h.cycle.code == 83 || h.cycle.code == 73 ? h.cycle.q_mm : std::nullopt;
+        d.dwell_s = h.cycle.p.empty() ? 0.0 : dwell_seconds(h.cycle.p, true);
+      }
+      out.holes.push_back(d);
+    }
   }
   out.rapid_xy_mm = p.rapid_xy_mm;
   out.tool_diameter_mm = p.tool_diameter_mm;

@@ -165,12 +165,24 @@ std::vector<std::string> check_same_holes(const gcode::Interpretation& run, cons
     double x, y, z;
     std::uint32_t line;
     int offset;  // the work offset: a second fixture's holes are others at the same X, Y (issue 83)
+    std::optional<double> peck, dwell_s;  // a canned cycle's Q and P (gcode::DrilledHole)
   };
   std::vector<Key> want, got;
   for (const gcode::ToolRun& r : expected.runs) {
-    for (const gcode::ProgramHole& h : r.holes) want.push_back({r.tool, h.at.x, h.at.y, h.cycle.bottom_mm(), h.line, r.work_offset});
+    for (const gcode::ProgramHole& h : r.holes) {
+      const bool canned = h.cycle.code != 0;
+      const std::optional<double> peck = h.cycle.code == 83 || h.cycle.code == 73 ? h.cycle.q_mm : std::nullopt;
+      const std::optional<double> dwell =
+          canned ? std::optional<double>(h.cycle.p.empty() ? 0.0 : gcode::dwell_seconds(h.cycle.p, true)) : std::nullopt;
+      want.push_back({r.tool, h.at.x, h.at.y, h.cycle.bottom_mm(), h.line, r.work_offset, peck, dwell});
+    }
   }
-  for (const auto& h : run.holes) got.push_back({h.tool, h.x_mm, h.y_mm, h.bottom_z_mm, h.line, h.work_offset});
+  for (const auto& h : run.holes) got.push_back({h.tool, h.x_mm, h.y_mm, h.bottom_z_mm, h.line, h.work_offset, h.peck_mm, h.dwell_s});
+  // Made the same way where both are canned cycles: the same dwell and peck (issue 83).
+  auto same_making = [&](const Key& a, const Key& b) {
+    return (!a.dwell_s || !b.dwell_s || std::fabs(*a.dwell_s - *b.dwell_s) <= 1e-3) &&
+           (!a.peck || !b.peck || std::fabs(*a.peck - *b.peck) <= tol);
+  };
   auto order = [](const Key& a, const Key& b) { return std::tie(a.x, a.y, a.tool, a.z) < std::tie(b.x, b.y, b.tool, b.z); };
   std::sort(got.begin(), got.end(), order);
   std::vector<char> used(got.size(), 0);
@@ -187,7 +199,7 @@ std::vector<std::string> check_same_holes(const gcode::Interpretation& run, cons
       const std::size_t i = static_cast<std::size_t>(it - got.begin());
       if (used[i] || std::fabs(it->y - w.y) > tol) continue;
       if (!near) near = &*it;
-      if (it->tool == w.tool && std::fabs(it->z - w.z) <= tol && it->offset == w.offset) {
+      if (it->tool == w.tool && std::fabs(it->z - w.z) <= tol && it->offset == w.offset && same_making(*it, w)) {
         match = i;
         break;
       }
@@ -203,6 +215,11 @@ std::vector<std::string> check_same_holes(const gcode::Interpretation& run, cons
       faults.push_back("hole " + at(w) + in(w.offset) + " of line " + std::to_string(w.line) + " (T" + std::to_string(w.tool) +
                        ", Z" + gcode::format_number(w.z, 3) + ") is drilled with T" + std::to_string(near->tool) + " to Z" +
                        gcode::format_number(near->z, 3) + (near->offset != w.offset ? (in(near->offset).empty() ? " in G54" : in(near->offset)) : "") +
+                       (same_making(*near, w) ? std::string()
+                                              : ", dwelling " + gcode::format_number(near->dwell_s.value_or(0), 3) + " s" +
+                                                    (near->peck ? " with pecks of " + gcode::format_number(*near->peck, 3) : std::string()) +
+                                                    " where the input dwells " + gcode::format_number(w.dwell_s.value_or(0), 3) + " s" +
+                                                    (w.peck ? " with pecks of " + gcode::format_number(*w.peck, 3) : std::string())) +
                        " (line " + std::to_string(near->line) + ")");
       used[static_cast<std::size_t>(near - got.data())] = 1;
     }

@@ -7,6 +7,7 @@
  */
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -32,6 +33,9 @@ struct DrilledHole {
   // (the hole is 2 r plus the tool's diameter); 0: drilled or plunged.
   double milled_radius_mm = 0.0;
   int work_offset = 54;    // the work offset it is drilled in (drilling.h, work_offset_text)
+  // How a canned cycle makes it (issue 83: verify compares them): its peck (G83, G73 Q) and the seconds
+  // it dwells at the bottom (its P); nullopt for expanded drilling, whose G4 P the controls count apart.
+  std::optional<double> peck_mm, dwell_s;
 };
 
 struct Interpretation {
