@@ -273,7 +273,7 @@ namespace corpus {
 
 const char* const kGcodePosts[] = {"KineticNCBeamicon2", "centroid", "dynapath", "fablin", "fanuc", "grbl", "jtech",
                                    "linuxcnc", "mach3_mach4", "marlin", "rrf", "smoothie", "uccnc"};
-const char* const kParts[] = {"plate3", "fixtures2"};
+const char* const kParts[] = {"plate3", "fixtures2", "stepped", "board333"};
 
 Holes freecad_holes(const std::string& part, bool with_tools) {
   Holes out;

@@ -370,7 +370,14 @@ class Reader {
       boundary_ = pending_change_ = true;
       ++out_.tool_changes;
       comment_change_pending_ = true;  // the comment that names the tool is the same change
-      selected_tool_ = ++comment_tools_;
+      // A controller's label names one tool however often it comes (an operation each).
+      if (controller) {
+        auto [it, fresh] = controller_tools_.try_emplace(m, 0);
+        if (fresh) it->second = ++comment_tools_;
+        selected_tool_ = it->second;
+      } else {
+        selected_tool_ = ++comment_tools_;
+      }
     }
   }
 
@@ -915,7 +922,8 @@ class Reader {
   bool cycle_started_ = false, have_r_ = false, have_z_ = false;
   bool cycle_words_cancelled_ = true;
   bool comment_change_pending_ = false;  // a "Begin toolchange" comment whose tool is not named yet
-  int comment_tools_ = 0;                // the highest tool a comment named or numbered  // by G80 or another cycle: a cycle's Q, P, I, J, K start afresh
+  int comment_tools_ = 0;                // the highest tool a comment named or numbered
+  std::map<std::string, int> controller_tools_;  // "TC:3.5MMDRILL" -> the tool numbered for it  // by G80 or another cycle: a cycle's Q, P, I, J, K start afresh
   std::optional<double> initial_z_;
   double feed_ = 0.0, rpm_ = 0.0;
   int spindle_ = 0, selected_tool_ = 0, work_offset_ = 54, length_offset_ = 0, coolant_ = 0;

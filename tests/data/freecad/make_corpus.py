@@ -6,7 +6,9 @@ committed files):  freecadcmd tests/data/freecad/make_corpus.py
 
 Each part is a plate of our own with holes; each Job drills them with
 FreeCAD's Drilling operation (a tool controller per diameter; G81, G82 with a
-dwell, G83 with pecks), posted with each post into POST/PART.nc. FreeCAD's
+dwell, G83 with pecks; a stepped block an operation per height; G73 in a
+Custom operation), posted with each post into POST/PART.nc (a post that
+cannot post headless leaves PART.nc.failed with its traceback). FreeCAD's
 own holes -- every feature's centre and depth, its tool and fixture, from the
 Job, not from a program -- go into PART.holes.csv: the oracle.
 """
@@ -44,18 +46,20 @@ POSTS = ["centroid", "dynapath", "fablin", "fanuc", "grbl", "jtech", "KineticNCB
 SHAPES = "/usr/share/freecad/Mod/Path/Tools/Shape/drill.fcstd"
 
 
-def plate(doc, name, size, holes):
-    """A plate size = (x, y, z) mm with through holes [(x, y, diameter)]."""
+def plate(doc, name, size, holes, step=None):
+    """A plate size = (x, y, z) mm with through holes [(x, y, diameter)]; with
+    step = (x, depth), the part beyond x is lowered by depth (holes at two heights)."""
     body = Part.makeBox(*size)
-    for x, y, d in holes:
-        body = body.cut(Part.makeCylinder(d / 2, size[2] + 2, App.Vector(x, y, -1)))
+    if step:
+        body = body.cut(Part.makeBox(size[0] - step[0], size[1], step[1] + 1, App.Vector(step[0], 0, size[2] - step[1])))
+    body = body.cut(Part.makeCompound([Part.makeCylinder(d / 2, size[2] + 2, App.Vector(x, y, -1)) for x, y, d in holes]))
     obj = doc.addObject("Part::Feature", name)
     obj.Shape = body
     doc.recompute()
     return obj
 
 
-def drilling(doc, job, number, diameter, cycle):
+def tool_controller(job, number, diameter):
     bit = PathToolBit.Factory.Create("Drill%g" % diameter, SHAPES)
     bit.Diameter = diameter
     # The fanuc post still asks a tool its legacy ToolType.
@@ -66,14 +70,21 @@ def drilling(doc, job, number, diameter, cycle):
     tc.SpindleSpeed = 1000.0 + 200 * number
     tc.VertFeed = 100.0
     job.Proxy.addToolController(tc)
+    return tc
+
+
+def drilling(doc, tc, cycle, where=None):
+    """A Drilling operation of the holes of tc's diameter (and, given `where`, of those at its centres)."""
+    diameter = tc.Tool.Diameter.Value
     PathUtils.UserInput = ChosenTool(tc)
-    op = PathDrilling.Create("Drill%d" % number)
+    op = PathDrilling.Create("Drill%d" % tc.ToolNumber)
     op.ToolController = tc
     op.Proxy.findAllHoles(op)
     # findAllHoles takes every hole the tool fits; keep this diameter's.
     keep = []
     for base, subs in op.Base:
-        mine = [s for s in subs if abs(base.Shape.getElement(s).Surface.Radius * 2 - diameter) < 1e-6] if subs else []
+        mine = [s for s in subs if abs(base.Shape.getElement(s).Surface.Radius * 2 - diameter) < 1e-6
+                and (where is None or where(base.Shape.getElement(s).Surface.Center))] if subs else []
         if mine:
             keep.append((base, mine))
     op.Base = keep
@@ -84,14 +95,34 @@ def drilling(doc, job, number, diameter, cycle):
         op.PeckEnabled = True
         op.PeckDepth = 2.5
     doc.recompute()
-    return op, tc
+    return op
 
 
-def own_holes(job):
-    """FreeCAD's own holes: each op's features, their centre, depth, tool, in each fixture."""
+def custom_g73(doc, tc, holes, top, bottom):
+    """A Custom operation drilling with G73 (chip breaking), which 0.20's Drilling cannot: as a shop writes it."""
+    import PathScripts.PathCustom as PathCustom
+    PathUtils.UserInput = ChosenTool(tc)
+    op = PathCustom.Create("CustomG73")
+    op.ToolController = tc
+    lines = ["G0 Z%.3f" % (top + 5)]
+    for x, y in holes:
+        lines += ["G0 X%.3f Y%.3f" % (x, y), "G73 X%.3f Y%.3f Z%.3f R%.3f Q1.500 F120" % (x, y, bottom, top + 2)]
+    lines += ["G80", "G0 Z%.3f" % (top + 5)]
+    op.Gcode = lines
+    op.Proxy.custom_holes = [(x, y, bottom) for x, y in holes]
+    doc.recompute()
+    return op
+
+
+def own_holes(job, custom):
+    """FreeCAD's own holes: each Drilling op's features, their centre, depth, tool, in each fixture;
+    a Custom op's, as its G-code gives them."""
     rows = []
     for fixture in job.Fixtures:
         for op in job.Operations.Group:
+            if op.Name.startswith("CustomG73"):
+                rows += [(fixture, op.ToolController.ToolNumber, x, y, z) for x, y, z in custom]
+                continue
             for base, subs in op.Base:
                 for s in subs:
                     c = base.Shape.getElement(s).Surface.Center
@@ -99,18 +130,29 @@ def own_holes(job):
     return rows
 
 
-def make(name, size, holes, cycles, fixtures=("G54",), order="Operation"):
+def make(name, size, holes, cycles, fixtures=("G54",), order="Operation", step=None, g73=None):
+    """cycles: (diameter, cycle) a tool each; with step (x, depth), each tool drills the holes on
+    each height in an operation of its own; g73: holes a Custom op drills with G73 and the last tool."""
     doc = App.newDocument(name)
-    part = plate(doc, name, size, [(x, y, d) for x, y, d in holes])
+    part = plate(doc, name, size, [(x, y, d) for x, y, d in holes], step)
     job = PathJob.Create("Job", [part], None)
     job.Fixtures = list(fixtures)
     job.OrderOutputBy = order
+    custom = []
     for n, (diameter, cycle) in enumerate(cycles, start=1):
-        drilling(doc, job, n, diameter, cycle)
+        tc = tool_controller(job, n, diameter)
+        if step:
+            drilling(doc, tc, cycle, lambda c: c.x <= step[0])
+            drilling(doc, tc, cycle, lambda c: c.x > step[0])
+        else:
+            drilling(doc, tc, cycle)
+    if g73:
+        op = custom_g73(doc, tc, g73, size[2], 0.0)
+        custom = op.Proxy.custom_holes
     doc.recompute()
     with open(os.path.join(HERE, name + ".holes.csv"), "w") as f:
         f.write("fixture,tool,x_mm,y_mm,bottom_mm\n")
-        for fixture, tool, x, y, bottom in own_holes(job):
+        for fixture, tool, x, y, bottom in own_holes(job, custom):
             f.write("%s,%d,%.4f,%.4f,%.4f\n" % (fixture, tool, x, y, bottom))
     postlist = PathPost.CommandPathPost().buildPostList(job)
     objs = [o for sub in postlist for o in sub]
@@ -156,3 +198,18 @@ make("plate3", (120, 80, 10), grid(5, 2, 20, 10, 10, 3.5) + grid(4, 2, 22, 15, 4
 # The same on two fixtures, ordered by tool.
 make("fixtures2", (120, 80, 10), grid(5, 2, 20, 10, 10, 3.5) + grid(4, 2, 22, 15, 45, 6.6),
      [(3.5, 81), (6.6, 83)], fixtures=("G54", "G55"), order="Tool")
+# A block with a step: holes on its top (Z 20) and on the step (Z 10), an operation per height.
+make("stepped", (100, 60, 20), grid(3, 2, 15, 10, 15, 5.0) + grid(3, 2, 15, 60, 15, 5.0), [(5.0, 81)], step=(50, 10))
+# A board of 333 holes of 1 mm, placed as a pseudo-random pattern (the same every run), and a
+# Custom operation drilling six more with G73.
+def board333():
+    holes, seed = [], 12345
+    while len(holes) < 333:
+        seed = (seed * 1103515245 + 12345) % 2147483648
+        x = 5 + (seed % 1500) / 10.0
+        seed = (seed * 1103515245 + 12345) % 2147483648
+        y = 5 + (seed % 900) / 10.0
+        if all((x - a) ** 2 + (y - b) ** 2 > 9 for a, b, _ in holes):
+            holes.append((x, y, 1.0))
+    return holes
+make("board333", (160, 100, 1.6), board333(), [(1.0, 81)], g73=[(20 + 20 * i, 97.5) for i in range(6)])

@@ -1,6 +1,6 @@
 (Exported by FreeCAD)
 (Post Processor: PathScripts.post.KineticNCBeamicon2_post)
-(Output Time:2026-12-06 10:30:43.816193)
+(Output Time:2026-12-06 11:10:53.601976)
 (begin preamble)
 % 
 G17 G21 G40 G49 G80 G90 

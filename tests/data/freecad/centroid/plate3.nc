@@ -1,7 +1,7 @@
 ;Exported by FreeCAD
 ;Post Processor: PathScripts.post.centroid_post
 ;CAM file: 
-;Output Time: 2026-12-06 10:30:43.291005
+;Output Time: 2026-12-06 11:10:53.135733
 G90 G80 G40 G49
 ;T1=TC__3_5mm_Drill
 ;T2=TC__6_6mm_Drill

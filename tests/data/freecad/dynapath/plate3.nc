@@ -1,6 +1,6 @@
 (Exported by FreeCAD)
 (Post Processor: PathScripts.post.dynapath_post)
-(Output Time:2026-12-06 10:30:43.296672)
+(Output Time:2026-12-06 11:10:53.142148)
 (begin preamble)
 G17
 G90

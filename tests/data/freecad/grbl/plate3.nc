@@ -1,6 +1,6 @@
 (Exported by FreeCAD)
 (Post Processor: PathScripts.post.grbl_post)
-(Output Time:2026-12-06 10:30:43.318521)
+(Output Time:2026-12-06 11:10:53.166515)
 (Begin preamble)
 G17 G90
 G21

@@ -1,6 +1,6 @@
 (Exported by FreeCAD)
 (Post Processor: PathScripts.post.jtech_post)
-(Output Time:2026-12-06 10:30:43.810963)
+(Output Time:2026-12-06 11:10:53.596936)
 (begin preamble)
 M05 S0
 G90

@@ -1,6 +1,6 @@
 (Exported by FreeCAD)
 (Post Processor: PathScripts.post.jtech_post)
-(Output Time:2026-12-06 10:30:43.324410)
+(Output Time:2026-12-06 11:10:53.172620)
 (begin preamble)
 M05 S0
 G90

@@ -1,6 +1,6 @@
 (Exported by FreeCAD)
 (Post Processor: PathScripts.post.linuxcnc_post)
-(Output Time:2026-12-06 10:30:43.337285)
+(Output Time:2026-12-06 11:10:53.186869)
 (begin preamble)
 G17 G54 G40 G49 G80 G90
 G21

@@ -1,6 +1,6 @@
 (Exported by FreeCAD)
 (Post Processor: PathScripts.post.marlin_post.py, version: 2020-11-03)
-(Output Time:2026-12-06 10:30:43.355271)
+(Output Time:2026-12-06 11:10:53.205928)
 (Begin preamble)
 (Default Configuration)
 G90

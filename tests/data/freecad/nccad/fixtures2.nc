@@ -1,7 +1,7 @@
 ;Exported by FreeCAD
 ;Post Processor: PathScripts.post.nccad_post
 ;CAM file: 
-;Output Time: 2026-12-06 10:30:43.840585
+;Output Time: 2026-12-06 11:10:53.625631
 G54
 G0 Z16.0
 (TC: 3.5mm Drill)

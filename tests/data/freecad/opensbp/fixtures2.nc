@@ -1,6 +1,6 @@
 'Exported by FreeCAD
 'Post Processor: PathScripts.post.opensbp_post
-'Output Time:2026-12-06 10:30:43.871705
+'Output Time:2026-12-06 11:10:53.656501
 JZ,16.0000
 ' (TC: 3.5mm Drill)
 &ToolName=1

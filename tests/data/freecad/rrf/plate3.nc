@@ -1,6 +1,6 @@
 (Exported by FreeCAD)
 (Post Processor: PathScripts.post.rrf_post.py, version: 2021-10-21)
-(Output Time:2026-12-06 10:30:43.375372)
+(Output Time:2026-12-06 11:10:53.226042)
 (Begin preamble)
 (Default Configuration)
 G90

@@ -1,6 +1,6 @@
 (Exported by FreeCAD)
 (Post Processor: PathScripts.post.smoothie_post)
-(Output Time:2026-12-06 10:30:43.382687)
+(Output Time:2026-12-06 11:10:53.233358)
 (begin preamble)
 G17 G90
 G21

@@ -3,7 +3,7 @@
 (Exported by FreeCAD for UC-CNC)
 (Post Processor: PathScripts.post.uccnc_post, version 0.0.4)
 (CAM file: )
-(Output Time: 2026-12-06 10:30:43.862520)
+(Output Time: 2026-12-06 11:10:53.647425)
 (Units: 'mm' and 'mm/min')
 (preamble: begin)
 G17 (Default: XY-plane)
