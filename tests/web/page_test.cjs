@@ -131,6 +131,12 @@ async function fresh(context) {
   const odbText = await page.getByRole('region', { name: 'Holes' }).textContent();
   check(odbText.includes('(non-plated): 6 holes from odb++') && odbText.includes('board 160.020 x 99.060 mm'),
         'the holes region names the sources and the board: ' + odbText.slice(0, 300));
+  // What the command line's summary says of slots, the page says too (issue 84).
+  const slotted = path.join(root, 'tests', 'data', 'boards', 'ecc83-pp_v2', 'ecc83-pp_v2.odb.tgz');
+  await page.getByLabel('Input files', { exact: true }).setInputFiles(slotted);
+  saved = await planAndSave(page);
+  const slotText = await page.getByRole('region', { name: 'Holes' }).textContent();
+  check(slotText.includes('9 slot(s) drilled as 45 holes'), 'the holes region says how the slots are drilled: ' + slotText.slice(0, 300));
 
   // 3. A panel of six, from the back with pins, Fanuc in inch.
   await fill(page, { Machine: '', 'Drills owned': '', 'End mill': '', Panel: '3x2', Pitch: '120,90', Side: 'back',

@@ -380,8 +380,12 @@
     }
     const notes = [];
     for (const i of view.inputs) {
-      notes.push(i.file + ': ' + i.holes + ' holes from ' + i.format + (i.description ? '; ' + i.description : '') +
-                 (i.features ? '; hole features: ' + i.features : ''));
+      // As the command line's summary says it (issue 84): duplicates removed, slots drilled or milled.
+      notes.push(i.file + ': ' + i.holes + ' holes from ' + i.format +
+                 (i.duplicates_removed ? ', ' + i.duplicates_removed + ' duplicates removed' : '') +
+                 (i.slots_drilled ? ', ' + i.slots_drilled + ' slot(s) drilled as ' + i.slot_holes + ' holes' : '') +
+                 (i.slots_milled ? ', ' + i.slots_milled + ' slot(s) milled along their length' : '') +
+                 (i.description ? '; ' + i.description : '') + (i.features ? '; hole features: ' + i.features : ''));
       for (const a of i.assumptions) notes.push(i.file + ': assumed ' + a);
       for (const w of i.warnings) notes.push(i.file + (w.line ? ':' + w.line : '') + ': warning: ' + w.what);
       for (const s of i.not_drilled) notes.push(i.file + (s.line ? ':' + s.line : '') + ': not made: ' + s.what);

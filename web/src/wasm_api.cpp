@@ -141,6 +141,9 @@ json holes_of(const job::Result& r) {
                       {"assumptions", part.assumptions},
                       {"description", part.description},  // issue 86: a board job's step, drill layers, size
                       {"slots_drilled", part.slots_drilled},
+                      {"slot_holes", part.slot_holes},  // issue 84: what the command line says, the page says
+                      {"slots_milled", part.slots_milled},
+                      {"duplicates_removed", part.duplicates_removed},
                       {"round_contours", part.round_contours},
                       {"features", formats::features_summary(part.features)}});
   }
