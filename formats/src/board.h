@@ -4,8 +4,8 @@
 // and the drill sources a board job holds — plated and non-plated holes, a
 // blind or buried span — each a LoadedHoles of its own, as PTH and NPTH
 // drill files are.
+#include <algorithm>
 #include <cmath>
-#include <map>
 #include <string>
 #include <utility>
 #include <vector>

@@ -77,7 +77,6 @@ std::string value(const Block& b, const char* key) {
 struct DrillLayer {
   std::string name;  // as the matrix writes it
   board::Span span;
-  std::uint32_t line = 0;
 };
 
 class OdbReader {
@@ -152,7 +151,6 @@ class OdbReader {
       if (upper(value(*b, "TYPE")) != "DRILL" || upper(value(*b, "CONTEXT")) == "MISC") continue;
       DrillLayer d;
       d.name = value(*b, "NAME");
-      d.line = b->line;
       d.span.conductors = static_cast<int>(conductors.size());
       auto index = [&](const std::string& name) {
         const auto it = std::find(conductors.begin(), conductors.end(), upper(name));

@@ -4,12 +4,11 @@ ElementTree, no code shared with acodrill's): every <Hole> under the
 LayerFeatures of the layers whose layerFunction is DRILL, in CadHeader units,
 for a file of one step and no StepRepeat. It checks `acodrill holes FILE` lists
 the same (within 1 µm):  usage  ipc2581_holes.py ACODRILL FILE[.gz]"""
-import csv
 import gzip
-import io
-import subprocess
 import sys
 import xml.etree.ElementTree as ET
+
+from listed import expect_listed  # noqa: E402 (beside this script)
 
 
 def local(tag):
@@ -43,14 +42,7 @@ def holes(path):
 
 
 def main():
-    acodrill, path = sys.argv[1], sys.argv[2]
-    mine = sorted(set((round(x, 6), round(y, 6), round(d, 6)) for x, y, d in holes(path)))
-    listed = subprocess.run([acodrill, "holes", path, "--format", "csv", "-q"], capture_output=True, text=True, check=True)
-    theirs = sorted((float(r["x_mm"]), float(r["y_mm"]), float(r["diameter_mm"])) for r in csv.DictReader(io.StringIO(listed.stdout)))
-    assert len(mine) == len(theirs), (len(mine), len(theirs))
-    worst = max(max(abs(a - b) for a, b in zip(m, t)) for m, t in zip(mine, theirs))
-    assert worst <= 0.001, worst
-    print(f"{path}: {len(mine)} holes, the same within {worst * 1000:.4f} µm")
+    expect_listed(sys.argv[1], sys.argv[2], holes(sys.argv[2]))
 
 
 if __name__ == "__main__":

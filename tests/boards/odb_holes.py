@@ -4,12 +4,11 @@ acodrill's: a flat job (no step-and-repeat) whose drill layers hold round
 pads. It lists them, then checks `acodrill holes JOB` lists the same
 (within 1 µm): usage  odb_holes.py ACODRILL JOB_FOLDER
 """
-import csv
-import io
 import os
 import re
-import subprocess
 import sys
+
+from listed import expect_listed  # noqa: E402 (beside this script)
 
 
 def drill_layers(job):
@@ -47,16 +46,7 @@ def holes(job):
 
 
 def main():
-    acodrill, job = sys.argv[1], sys.argv[2]
-    mine = holes(job)
-    listed = subprocess.run([acodrill, "holes", job, "--format", "csv", "-q"], capture_output=True, text=True, check=True)
-    theirs = sorted((float(r["x_mm"]), float(r["y_mm"]), float(r["diameter_mm"])) for r in csv.DictReader(io.StringIO(listed.stdout)))
-    # acodrill drops exact duplicates; so does the comparison.
-    mine = sorted(set((round(x, 6), round(y, 6), round(d, 6)) for x, y, d in mine))
-    assert len(mine) == len(theirs), (len(mine), len(theirs))
-    worst = max(max(abs(a - b) for a, b in zip(m, t)) for m, t in zip(mine, theirs))
-    assert worst <= 0.001, worst
-    print(f"{job}: {len(mine)} holes, the same within {worst * 1000:.4f} µm")
+    expect_listed(sys.argv[1], sys.argv[2], holes(sys.argv[2]))
 
 
 if __name__ == "__main__":
