@@ -5,8 +5,10 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <regex>
 #include <sstream>
@@ -257,6 +259,7 @@ TEST(features_test, each_feature_is_drilled_then_tapped_counterbored_or_counters
         if (k.kind == "tap") {
           EXPECT_NE(program.find("G84"), std::string::npos);
           EXPECT_NEAR(sf.second, sf.first * (k.tool_mm > 5 ? 1.0 : 0.5), 0.05) << "F = pitch x S";
+          EXPECT_NEAR(canon.made[found].pitch, k.tool_mm > 5 ? 1.0 : 0.5, 1e-3) << "rs274: reversed at the bottom, fed at the pitch";
           EXPECT_EQ(program.find("M29") != std::string::npos, dialect == "fanuc") << "rigid tapping: Fanuc's M29";
         }
       }
@@ -280,6 +283,102 @@ TEST(features_test, each_feature_is_drilled_then_tapped_counterbored_or_counters
   auto bad = acodrill_run("holes " + shell_quote(drawing("build_plate")) + " --concentric sometimes");
   EXPECT_EQ(bad.code, 2);
   EXPECT_THAT(bad.err, ::testing::HasSubstr("--concentric must be features or separate"));
+}
+
+// A thread's pitch in mm, from its name: ISO 261's coarse series (M1.6 to
+// M20), a fine "MxP", or an inch thread's threads per inch ("1/4-20 UNC").
+double thread_pitch(const std::string& thread) {
+  static const std::map<std::string, double> coarse{{"M1.6", 0.35}, {"M2", 0.4}, {"M2.5", 0.45}, {"M3", 0.5},  {"M4", 0.7},
+                                                    {"M5", 0.8},    {"M6", 1.0}, {"M8", 1.25},   {"M10", 1.5}, {"M12", 1.75},
+                                                    {"M16", 2.0},   {"M20", 2.5}};
+  const std::size_t x = thread.find('x');
+  if (thread[0] == 'M' && x != std::string::npos) return std::stod(thread.substr(x + 1));
+  if (thread[0] == 'M') return coarse.at(thread);
+  return 25.4 / std::stod(thread.substr(thread.find('-') + 1));
+}
+
+// Issue 82: a LinuxCNC mill whose spindle has an encoder (profile
+// "spindle_encoder") taps by G33.1, the Z motion synchronized with the
+// spindle. rs274 reads every tap back as a RIGID_TAP at its hole, begun
+// above the part, at its thread's pitch (metric coarse and fine, UNC and UNF,
+// in mm and inch programs), after its drill; verify agrees, and finds a tap
+// whose K is not its thread's pitch. The same profile on HAAS keeps G84.
+TEST(features_test, a_spindle_with_an_encoder_taps_by_g33_1_at_the_threads_pitch) {
+  testutil::TempDir t;
+  testutil::spit(t / "encoder.json", R"({"name": "knee mill, LinuxCNC, spindle encoder", "dialect": "linuxcnc", "spindle_encoder": true})");
+  struct Case {
+    std::string drawing, units;
+  };
+  for (const Case& c : {Case{"tapped_metric_quadrants", "mm"}, Case{"tapped_inch", "inch"}, Case{"build_plate", "mm"}}) {
+    SCOPED_TRACE(c.drawing + ", " + c.units);
+    auto r = acodrill_run("plan " + shell_quote(drawing(c.drawing)) + " -o " + t / "p.ngc" + " --machine " + t / "encoder.json" +
+                          " --units " + c.units + " --origin drawing --iterations 5 --thickness 12 -q");
+    ASSERT_EQ(r.code, 0) << r.err;
+    const std::string program = slurp(t / "p.ngc");
+    EXPECT_EQ(program.find("G84"), std::string::npos);
+    const double unit = c.units == "inch" ? 25.4 : 1.0;
+    const oracles::Canon canon = oracles::run_rs274(t / "p.ngc");
+    std::size_t tapped = 0;
+    for (const Row& w : expected_rows(testutil::data("dxf-features/" + c.drawing + ".features.csv"))) {
+      if (w.kind != "tapped") continue;
+      ++tapped;
+      std::size_t tap = canon.made.size(), drill = canon.made.size();
+      for (std::size_t i = 0; i < canon.made.size(); ++i) {
+        const oracles::Made& m = canon.made[i];
+        if (std::fabs(m.x * unit - w.x) > 0.002 || std::fabs(m.y * unit - w.y) > 0.002) continue;
+        (m.synchronized ? tap : drill) = i;
+      }
+      ASSERT_LT(tap, canon.made.size()) << w.thread << " at " << w.x << "," << w.y << " is not tapped by G33.1";
+      ASSERT_LT(drill, tap) << w.thread << " at " << w.x << "," << w.y << ": tapped before its drill";
+      EXPECT_NEAR(canon.made[tap].pitch * unit, thread_pitch(w.thread), 2e-4) << w.thread;
+      EXPECT_LT(canon.made[tap].bottom * unit, -12.0 + 1e-6) << w.thread << " tapped through";
+    }
+    EXPECT_GT(tapped, 0u);
+    EXPECT_EQ(static_cast<std::size_t>(std::count_if(canon.made.begin(), canon.made.end(), [](const oracles::Made& m) { return m.synchronized; })),
+              tapped);
+    auto v = acodrill_run("verify " + t / "p.ngc" + " --holes " + shell_quote(drawing(c.drawing)) + " -q");
+    EXPECT_EQ(v.code, 0) << v.out << v.err;
+  }
+  // A tap's K changed to another pitch (M3's 0.5 to 0.6): verify names the hole and both pitches.
+  auto r = acodrill_run("plan " + shell_quote(drawing("build_plate")) + " -o " + t / "p.ngc" + " --machine " + t / "encoder.json" +
+                        " --origin drawing --iterations 5 -q");
+  ASSERT_EQ(r.code, 0) << r.err;
+  std::string program = slurp(t / "p.ngc");
+  const std::size_t k = program.find("K0.5000");
+  ASSERT_NE(k, std::string::npos) << program;
+  program.replace(k, 7, "K0.6000");
+  testutil::spit(t / "wrong.ngc", program);
+  auto v = acodrill_run("verify " + t / "wrong.ngc" + " --holes " + shell_quote(drawing("build_plate")) + " -q");
+  EXPECT_EQ(v.code, 1);
+  EXPECT_THAT(v.out + v.err, ::testing::HasSubstr("runs at 0.6 mm a turn where the M3's pitch is 0.5 mm"));
+  // The program as another CAM's input: reordered in its own style it keeps
+  // G33.1; for HAAS each rigid tap becomes G84 at F = K x S; verify compares
+  // the pitch, and a K changed in the output is found.
+  auto again = acodrill_run("plan " + t / "p.ngc" + " -o " + t / "q.ngc" + " -q");
+  ASSERT_EQ(again.code, 0) << again.err;
+  EXPECT_EQ(oracles::run_rs274(t / "q.ngc").made.size(), oracles::run_rs274(t / "p.ngc").made.size());
+  EXPECT_NE(slurp(t / "q.ngc").find("G33.1"), std::string::npos);
+  EXPECT_EQ(acodrill_run("verify " + t / "q.ngc" + " --holes " + t / "p.ngc" + " -q").code, 0);
+  auto as_haas = acodrill_run("plan " + t / "p.ngc" + " --dialect haas -o " + t / "q.nc" + " -q");
+  ASSERT_EQ(as_haas.code, 0) << as_haas.err;
+  const std::string g84 = slurp(t / "q.nc");
+  EXPECT_EQ(g84.find("G33.1"), std::string::npos);
+  EXPECT_EQ(acodrill_run("verify " + t / "q.nc" + " --holes " + t / "p.ngc" + " -q").code, 0);
+  std::smatch sm;
+  ASSERT_TRUE(std::regex_search(g84, sm, std::regex(R"(S(\d+) M03\n(?:[^\n]*\n){1,3}G99 G84 [^\n]* F([0-9.]+))"))) << g84;
+  EXPECT_NEAR(std::stod(sm[2]), 0.5 * std::stod(sm[1]), 0.05) << "F = K x S";
+  std::string retapped = slurp(t / "q.ngc");
+  retapped.replace(retapped.find("K0.5000"), 7, "K0.6000");
+  testutil::spit(t / "q.ngc", retapped);
+  auto off = acodrill_run("verify " + t / "q.ngc" + " --holes " + t / "p.ngc" + " -q");
+  EXPECT_EQ(off.code, 1);
+  EXPECT_THAT(off.out + off.err, ::testing::HasSubstr("tapped at 0.6 mm a turn where the input taps at 0.5"));
+  // On HAAS the same machine's taps stay G84 (HAAS taps rigidly with it), at F = pitch x S.
+  auto haas = acodrill_run("plan " + shell_quote(drawing("build_plate")) + " -o " + t / "h.nc" + " --machine " + t / "encoder.json" +
+                           " --dialect haas --origin drawing --iterations 5 -q");
+  ASSERT_EQ(haas.code, 0) << haas.err;
+  EXPECT_EQ(slurp(t / "h.nc").find("G33.1"), std::string::npos);
+  EXPECT_NE(slurp(t / "h.nc").find("G84"), std::string::npos);
 }
 
 // GRBL and Marlin cannot tap: the holes are drilled at the tap drill and the

@@ -202,4 +202,10 @@ TEST(gcode_test, canned_cycle_dwells_and_taps_are_timed_in_the_controls_units) {
   EXPECT_LT(feed_out, 3.5);
   EXPECT_NEAR(cycle("G84") - cycle("G85"), k.tap_reverse_s, 1e-9);
   EXPECT_NEAR(cycle("G74") - cycle("G85"), k.tap_reverse_s, 1e-9);
+  // LinuxCNC's G33.1 (issue 82) taps at K a turn of the spindle: K0.5 at
+  // S240 is G84's F120, down and up with the same reversal, from where Z is.
+  const double rigid = gcode::time_program("G21 G90\nS240 M3\nG0 X0 Y0 Z5\nG0 X10 Y0 Z1\nG33.1 X10 Y0 Z-6 K0.5\nG0 Z5\n", k).drilling_s;
+  EXPECT_NEAR(rigid, cycle("G84"), 1e-6);
+  const double inch = gcode::time_program("G20 G90\nS240 M3\nG0 X0 Y0 Z0.2\nG0 X0.4 Y0 Z0.04\nG33.1 X0.4 Y0 Z-0.24 K0.02\nG0 Z0.2\n", k).drilling_s;
+  EXPECT_NEAR(inch, 2 * (0.28 * 25.4) / (0.02 * 25.4 * 240) * 60 + k.tap_reverse_s, 0.05);
 }

@@ -37,6 +37,10 @@ struct Made {
   double bottom = 0;
   double path_radius = 0;   // 0: drilled
   int offset = 1;           // the work offset it is drilled in: rs274's G5X index (1 G54 ... 6 G59, 7-9 G59.1-G59.3)
+  // Tapped (the spindle reversed at the bottom, or RIGID_TAP): length a turn,
+  // the feed over the spindle's speed (G84, G74) or the synchronized motion's (G33.1); 0: not tapped.
+  double pitch = 0;
+  bool synchronized = false;  // RIGID_TAP (G33.1)
 };
 
 struct Canon {
@@ -76,8 +80,10 @@ inline Canon run_rs274(const std::string& program_path) {
   EXPECT_EQ(r.code, 0) << r.err;
   EXPECT_EQ(r.err.find("error"), std::string::npos) << r.err;
   Canon c;
-  static const std::regex call(R"((STRAIGHT_TRAVERSE|STRAIGHT_FEED|ARC_FEED|SELECT_TOOL|STRAIGHT_PROBE|SET_G5X_OFFSET)\(([^)]*)\))");
+  static const std::regex call(
+      R"((STRAIGHT_TRAVERSE|STRAIGHT_FEED|ARC_FEED|SELECT_TOOL|STRAIGHT_PROBE|SET_G5X_OFFSET|SET_SPINDLE_SPEED|SET_FEED_RATE|START_SPEED_FEED_SYNC|RIGID_TAP|START_SPINDLE_CLOCKWISE|START_SPINDLE_COUNTERCLOCKWISE)\(([^)]*)\))");
   int tool = 0, offset = 1;
+  double speed = 0, feed = 0, sync_pitch = 0;
   double x = 0, y = 0, z = 0;
   bool open = false;  // a hole is being made here
   bool here = false;  // the last hole made is where the spindle is, with this tool (a G83 peck goes on in it)
@@ -94,6 +100,36 @@ inline Canon run_rs274(const std::string& program_path) {
       continue;
     }
     const std::vector<double> v = numbers(m[2]);
+    if (m[1] == "SET_SPINDLE_SPEED") {
+      speed = v.at(1);
+      continue;
+    }
+    if (m[1] == "SET_FEED_RATE") {
+      feed = v.at(0);
+      continue;
+    }
+    if (m[1] == "START_SPEED_FEED_SYNC") {
+      sync_pitch = v.at(0);
+      continue;
+    }
+    if (m[1] == "START_SPINDLE_CLOCKWISE" || m[1] == "START_SPINDLE_COUNTERCLOCKWISE") {
+      // Turned the other way at the bottom of a hole: a tap (G84, G74), fed at its pitch a turn.
+      if (open && cut.empty() && !c.made.empty() && speed > 0) c.made.back().pitch = feed / speed;
+      continue;
+    }
+    if (m[1] == "RIGID_TAP") {
+      // G33.1: over the hole already (rs274 writes the traverse before), down and back where it began.
+      EXPECT_NEAR(v[0], x, 1e-9) << "a rigid tap moving in XY: " << line;
+      EXPECT_NEAR(v[1], y, 1e-9) << "a rigid tap moving in XY: " << line;
+      EXPECT_GT(z, 1e-9) << "a rigid tap begun at or below the top: " << line;
+      Made tap{tool, v[0], v[1], v[2], 0.0, offset};
+      tap.pitch = sync_pitch;
+      tap.synchronized = true;
+      c.made.push_back(tap);
+      open = here = false;
+      cut.clear();
+      continue;
+    }
     if (m[1] == "SET_G5X_OFFSET") {
       offset = static_cast<int>(v[0]);
       open = here = false;

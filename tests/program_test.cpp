@@ -156,6 +156,37 @@ TEST(program_test, tapping_and_boring_cycles_keep_their_words) {
   EXPECT_TRUE(h[2]->cycle.p.empty()) << "a new cycle forgets the last one's dwell";
 }
 
+// LinuxCNC's G33.1 (issue 82): a tapped hole from where Z is, its K the
+// pitch (inch too); refused in one line without K, without Z, from a Z not
+// known, or moving in X/Y at the part's top.
+TEST(program_test, a_rigid_tap_g33_1_is_a_tapped_hole_begun_where_z_is) {
+  const auto p = gcode::read_drilling("G20\nT4 M6\nS400 M3\nG0 X0 Y0 Z1\nG0 Z0.1\nG33.1 X0 Y0 Z-0.5 K0.05\nG0 X1\nG33.1 X1 Z-0.5 K0.05\nG0 Z1\nM30\n");
+  const auto h = all_holes(p);
+  ASSERT_EQ(h.size(), 2u);
+  for (const auto* hole : h) {
+    EXPECT_EQ(hole->cycle.code, 331);
+    EXPECT_NEAR(hole->cycle.r_mm, 2.54, 1e-9);
+    EXPECT_NEAR(hole->cycle.z_mm, -12.7, 1e-9);
+    EXPECT_NEAR(hole->cycle.pitch_mm, 1.27, 1e-9);
+    EXPECT_NEAR(hole->cycle.feed_mm_min, 1.27 * 400, 1e-9);
+  }
+  EXPECT_NEAR(h[1]->at.x, 25.4, 1e-9);
+  for (const auto& [text, says] : std::vector<std::pair<std::string, std::string>>{
+           {"G21\nS400 M3\nG0 X0 Y0 Z2\nG33.1 X0 Y0 Z-5\n", "G33.1 without K"},
+           {"G21\nS400 M3\nG0 X0 Y0 Z2\nG33.1 X0 Y0 K1\n", "G33.1 without Z"},
+           {"G21\nS400 M3\nG53 G0 Z0\nG33.1 X0 Y0 Z-5 K1\n", "G33.1 from a Z not known"},
+           {"G21\nS400 M3\nG0 X0 Y0 Z2\nG33.1 X0 Y0 Z5 K1\n", "G33.1 depth Z is not below where it starts"},
+           {"G21\nS400 M3\nG0 X0 Y0 Z0\nG33.1 X5 Y0 Z-5 K1\n", "G33.1 moves in X/Y at Z0.000"}}) {
+    try {
+      gcode::read_drilling(text);
+      ADD_FAILURE() << "read: " << text;
+    } catch (const gcode::ProgramError& e) {
+      EXPECT_EQ(e.line(), 4u) << text;
+      EXPECT_THAT(e.what(), ::testing::HasSubstr(says));
+    }
+  }
+}
+
 TEST(program_test, a_reordered_program_reads_back_to_the_same_holes_in_both_styles) {
   const std::string text = testutil::slurp(testutil::data("real-gcode/fusion360_mach3_heatsunk_drill.tap"));
   gcode::DrillingProgram p = gcode::read_drilling(text);

@@ -201,12 +201,12 @@ int cmd_verify(const VerifyArgs& a, const InputArgs& in, bool quiet) {
   for (const std::string& p : a.holes) holes_path += (holes_path.empty() ? "" : " + ") + p;
   const formats::InputOptions in_options = job::input_options(read_input_settings(in));
   app::LoadedHoles expected = app::load_job(a.holes, in_options).holes;
-  std::vector<gcode::Operation> operation_kinds;  // of the features' operations, in their order
+  std::vector<planning::OperationSpec> operations;  // the features' operations, in their order
   {
     // Issue 82: the operations plan makes of the hole features: taps where the
     // program has canned cycles (GRBL and Marlin leave them to the operator).
     // Depths are not checked here, so no thickness can make one contradict.
-    static const std::regex canned(R"((^|[^0-9.])G(8[1-5]|7[34])([^0-9.]|$))");
+    static const std::regex canned(R"((^|[^0-9.])G(8[1-5]|7[34]|33\.1)([^0-9.]|$))");
     std::string code;
     for (std::size_t at = 0, depth = 0; at < text.size(); ++at) {
       if (text[at] == '(') ++depth;
@@ -222,7 +222,7 @@ int cmd_verify(const VerifyArgs& a, const InputArgs& in, bool quiet) {
     settings.end_mill_mm = a.bench.end_mill_mm;
     settings.processes = in_options.processes.get();
     const planning::Operations ops = planning::add_operations(expected.holes, no_sources, expected.features, settings, holes_path);
-    for (const planning::OperationSpec& spec : ops.specs) operation_kinds.push_back(spec.kind);
+    operations = ops.specs;
   }
   if (!a.panel.empty() || !a.pitch.empty()) {
     std::string grid;
@@ -253,7 +253,7 @@ int cmd_verify(const VerifyArgs& a, const InputArgs& in, bool quiet) {
   } else {
     job::turn_and_place(expected.holes, a.bench, nullptr, nullptr, nullptr);
   }
-  const std::vector<std::string> faults = job::check_drilled(run, expected.holes, tooling, operation_kinds);
+  const std::vector<std::string> faults = job::check_drilled(run, expected.holes, tooling, operations);
   if (!faults.empty()) return print_faults(faults, a.program, quiet);
   std::printf("ok: %zu input holes drilled once each with the right tool\n", expected.holes.size());
   return 0;

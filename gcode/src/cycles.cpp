@@ -62,8 +62,8 @@ std::vector<ZMove> expand_cycle(const HoleCycle& c, double retract_z_mm, std::ui
       if (retract_z_mm > c.r_mm) m.push_back(rapid(retract_z_mm));
       return m;
     default:
-      throw ProgramError(line, "G" + std::to_string(c.code) +
-                                   (c.code == 84 || c.code == 74 ? " (tapping)" : "") +
+      throw ProgramError(line, (c.code == 331 ? std::string("G33.1") : "G" + std::to_string(c.code)) +
+                                   (c.code == 84 || c.code == 74 || c.code == 331 ? " (tapping)" : "") +
                                    " cannot be written as moves for a control without canned cycles; "
                                    "choose --dialect haas, fanuc or linuxcnc, or --keep-style");
   }

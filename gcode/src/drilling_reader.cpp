@@ -157,7 +157,7 @@ int decimals_of(const std::string& number) {
   return dot == std::string::npos ? 0 : static_cast<int>(number.size() - dot - 1);
 }
 
-enum class Motion { Rapid, Feed, Arc, Cycle };
+enum class Motion { Rapid, Feed, Arc, Cycle, RigidTap };  // RigidTap: LinuxCNC's G33.1
 
 // The hole being made by expanded drilling: open from the first feed down at
 // an XY until the spindle leaves that XY.
@@ -419,6 +419,7 @@ class Reader {
               cycle_code = code / 10;
               break;
             case 800: g80 = true; break;
+            case 331: motion = Motion::RigidTap; break;
             case 170: break;
             case 180: case 190: if (options_.drilling_only) refuse("another plane (G" + w.text + ")"); break;
             case 200: inch_ = true; break;
@@ -593,6 +594,11 @@ class Reader {
       return;
     }
     const aco::Point2 to{wx ? (absolute_ ? *wx : xy_.x + *wx) : xy_.x, wy ? (absolute_ ? *wy : xy_.y + *wy) : xy_.y};
+    if (motion_ == Motion::RigidTap) {
+      if (wx || wy || wz) rigid_tap(to, wz, k_word);
+      stopped(stop);
+      return;
+    }
     // K: HAAS's least peck beside I and J (G83, G73); anywhere else in a
     // cycle, like L, how many times the block drills (Fanuc, HAAS, LinuxCNC).
     const bool peck_k = k_word && (motion_ == Motion::Cycle || motion == Motion::Cycle) && (wi || wj) &&
@@ -840,6 +846,43 @@ class Reader {
     }
   }
 
+  // LinuxCNC's G33.1 X Y Z K: over X Y at the height Z is at (a rapid),
+  // then a tap down to Z at K a turn and back up to that height: one tapped
+  // hole, as a cycle whose R is where it began (HoleCycle code 331).
+  void rigid_tap(aco::Point2 to, std::optional<double> wz, const std::optional<Word>& k) {
+    close_hole();
+    if (!k || !(k->value > 0)) throw ProgramError(lineno_, "G33.1 without K (the thread's pitch, a positive length a turn)");
+    if (!wz) throw ProgramError(lineno_, "G33.1 without Z (the tap's depth)");
+    if (!z_) throw ProgramError(lineno_, "G33.1 from a Z not known: it taps from where Z is, so move Z above the hole first");
+    const double start = *z_;
+    const double bottom = absolute_ ? *wz : start + *wz;
+    if (bottom >= start) throw ProgramError(lineno_, "G33.1 depth Z is not below where it starts");
+    const bool moved = aco::euclidean(xy_, to) > kTiny;
+    if (moved && start <= kTiny && options_.drilling_only) {
+      refuse("G33.1 moves in X/Y at Z" + format_number(start, 3) + ", at or below the top of the part");
+    }
+    const std::uint32_t arrived_on = arrive_line_;
+    if (moved) rapid_to(to);
+    ToolRun& run = current_run();
+    ProgramHole h;
+    h.at = xy_;
+    h.cycle.code = 331;
+    h.cycle.z_mm = bottom;
+    h.cycle.r_mm = start;
+    h.cycle.pitch_mm = k->value * scale();
+    h.cycle.feed_mm_min = h.cycle.pitch_mm * rpm_;
+    h.cycle.rigid = true;
+    h.arrive_z_mm = moved ? std::optional<double>(start) : arrive_z_;
+    h.line = lineno_;
+    h.first_line = !moved && arrived_on && arrived_on >= last_hole_line_ ? arrived_on : lineno_;
+    h.last_line = lineno_;
+    run.holes.push_back(std::move(h));
+    last_hole_line_ = lineno_;
+    arrive_z_ = start;
+    arrive_line_ = 0;
+    approach_.clear();
+  }
+
   void cycle_block(bool drills, aco::Point2 to, std::optional<double> wz, std::optional<double> wr,
                    std::optional<double> wq, const std::optional<std::string>& wp, const std::string& extra) {
     close_hole();
@@ -951,7 +994,7 @@ double HoleCycle::bottom_mm() const {
 
 bool HoleCycle::same_words(const HoleCycle& o) const {
   return code == o.code && z_mm == o.z_mm && r_mm == o.r_mm && q_mm == o.q_mm && p == o.p && feed_mm_min == o.feed_mm_min &&
-         extra == o.extra && rigid == o.rigid;
+         extra == o.extra && rigid == o.rigid && pitch_mm == o.pitch_mm;
 }
 
 bool DrillingProgram::incremental_after(std::uint32_t line) const {

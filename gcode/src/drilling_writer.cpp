@@ -121,6 +121,22 @@ class Writer {
         }
         continue;
       }
+      if (c.code == 331) {
+        // G33.1 (LinuxCNC's rigid tap): from the travel plane over the hole,
+        // down to where the input began it, and it comes back there.
+        if (cycle_on) {
+          line("G80");
+          cycle_on = false;
+          words = nullptr;
+        }
+        if (!z || *z < travel.z_mm - 1e-9) line(std::string(rapid()) + " Z" + n(travel.z_mm));
+        if (!(i == 0 && at_first)) line(std::string(rapid()) + " " + xy);
+        if (std::fabs(travel.z_mm - c.r_mm) > 1e-9) line(std::string(rapid()) + " Z" + n(c.r_mm));
+        line("G33.1 " + xy + " Z" + n(c.z_mm) + " K" + format_number(s_.inch ? c.pitch_mm / kMmPerInch : c.pitch_mm, s_.inch ? 6 : 4));
+        if (std::fabs(travel.z_mm - c.r_mm) > 1e-9) line(std::string(rapid()) + " Z" + n(travel.z_mm));
+        z = travel.z_mm;
+        continue;
+      }
       if (!cycle_on && (!z || std::fabs(*z - travel.z_mm) > 1e-9)) {
         // The initial plane (G98's retract) is where the cycle starts.
         line(std::string(rapid()) + " Z" + n(travel.z_mm));
@@ -254,7 +270,7 @@ bool hole_making_only(std::string_view raw) {
     if (c != 'G') return false;
     double g = std::strtod(code.c_str() + i + 1, nullptr);
     const int k = static_cast<int>(std::lround(g * 10));
-    static const int allowed[] = {0, 10, 40, 730, 740, 800, 810, 820, 830, 840, 850, 860, 870, 880, 890, 900, 980, 990};
+    static const int allowed[] = {0, 10, 40, 331, 730, 740, 800, 810, 820, 830, 840, 850, 860, 870, 880, 890, 900, 980, 990};
     if (std::find(std::begin(allowed), std::end(allowed), k) == std::end(allowed)) return false;
   }
   return true;
@@ -299,7 +315,7 @@ std::string without_hole_words(std::string_view raw) {
     bool drop = std::string_view("XYZRQPFIJKLE").find(letter) != std::string_view::npos;
     if (letter == 'G') {
       const int k = static_cast<int>(std::lround(std::strtod(word.c_str() + 1, nullptr) * 10));
-      drop = k == 0 || k == 10 || k == 40 || (k >= 730 && k <= 890) || k == 980 || k == 990;
+      drop = k == 0 || k == 10 || k == 40 || k == 331 || (k >= 730 && k <= 890) || k == 980 || k == 990;
     }
     if (!drop) {
       std::string w = word;
@@ -322,7 +338,7 @@ bool moves_without_motion_word(std::string_view raw) {
     if (c == 'X' || c == 'Y' || c == 'Z') axis = true;
     if (c == 'G') {
       const int k = static_cast<int>(std::lround(std::strtod(code.c_str() + i + 1, nullptr) * 10));
-      if (k == 0 || k == 10 || k == 280 || k == 300 || k == 530 || (k >= 730 && k <= 890)) return false;
+      if (k == 0 || k == 10 || k == 280 || k == 300 || k == 331 || k == 530 || (k >= 730 && k <= 890)) return false;
     }
   }
   return axis;
@@ -452,9 +468,34 @@ void write_drilling(std::ostream& out, const DrillingProgram& program, const Dri
   if (settings.program_number < 1 || settings.program_number > 99999) {
     throw std::invalid_argument("program number must be 1..99999");
   }
-  if (settings.keep_style) write_keep_style(out, program, settings);
-  else if (!has_canned_cycles(settings.dialect)) write_hobby(out, program, settings);
-  else write_dialect(out, program, settings);
+  if (settings.keep_style) {
+    write_keep_style(out, program, settings);
+    return;
+  }
+  // G33.1 is LinuxCNC's: for another control a rigid tap is its G84 at the
+  // same pitch (F = K x S; Fanuc's with M29), and a control without canned
+  // cycles cannot tap (expand_cycle refuses it).
+  const auto rigid_tap = [](const ProgramHole& h) { return h.cycle.code == 331; };
+  const bool convert = settings.dialect != Dialect::LinuxCnc &&
+                       std::any_of(program.runs.begin(), program.runs.end(), [&](const ToolRun& r) {
+                         return std::any_of(r.holes.begin(), r.holes.end(), rigid_tap);
+                       });
+  DrillingProgram as_g84;
+  if (convert) {
+    as_g84 = program;
+    for (ToolRun& run : as_g84.runs) {
+      for (ProgramHole& h : run.holes) {
+        if (!rigid_tap(h)) continue;
+        h.cycle.code = run.spindle == 4 ? 74 : 84;
+        h.cycle.feed_mm_min = h.cycle.pitch_mm * run.spindle_rpm;
+        h.cycle.pitch_mm = 0.0;
+        h.cycle.retract_initial = false;
+      }
+    }
+  }
+  const DrillingProgram& p = convert ? as_g84 : program;
+  if (!has_canned_cycles(settings.dialect)) write_hobby(out, p, settings);
+  else write_dialect(out, p, settings);
 }
 
 }  // namespace gcode

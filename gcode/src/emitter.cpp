@@ -32,6 +32,8 @@ class Writer {
   double to_units(double mm) const { return s_.units == Units::Inch ? mm / kMmPerInch : mm; }
   std::string c(double mm) const { return format_number(to_units(mm), coord_decimals()); }
   std::string f(double mm_min) const { return format_number(to_units(mm_min), feed_decimals()); }
+  // A thread's pitch (G33.1 K): to 0.1 µm a turn, so that its error over a hole's depth stays far below a thread's tolerance.
+  std::string pitch(double mm) const { return format_number(to_units(mm), s_.units == Units::Inch ? 6 : 4); }
 
   void line(const std::string& text) { out_ << text << '\n'; }
 
@@ -214,6 +216,7 @@ std::string cycle_description(const Tool& t, Dialect d) {
   if (t.end_mill) return has_canned_cycles(d) ? "G02 helix" : "G2 helix";
   if (has_canned_cycles(d)) {
     if (is_tapping(t.cycle) && d == Dialect::Fanuc) return std::string("M29 ") + to_string(t.cycle) + " (rigid)";
+    if (taps_by_g33_1(t, d)) return "G33.1 (rigid, spindle-synchronized)";
     return to_string(t.cycle);
   }
   switch (t.cycle) {
@@ -311,6 +314,10 @@ std::optional<Operation> operation_from_string(const std::string& name) {
 }
 
 bool is_tapping(Cycle c) { return c == Cycle::G84 || c == Cycle::G74; }
+
+bool taps_by_g33_1(const Tool& t, Dialect d) {
+  return d == Dialect::LinuxCnc && t.spindle_synchronized && is_tapping(t.cycle) && !t.end_mill;
+}
 
 std::string format_number(double value, int decimals) {
   char buf[64];
@@ -477,6 +484,21 @@ void write_program(std::ostream& out, const std::vector<ToolPass>& passes, const
         w.milled_hole(m.start, m.moves);
         i += m.span;
       }
+    } else if (taps_by_g33_1(t, s.dialect)) {
+      // LinuxCNC's rigid tapping: G33.1 feeds from where Z is (R) to the
+      // depth at K a turn, reverses the spindle and comes back to R; the
+      // travel between holes is ours, at R or over a clamp at the initial plane.
+      bool at_r = false;
+      for (std::size_t i = first; i < p.holes.size(); ++i) {
+        const aco::Point2& h = p.holes[i];
+        if (i != first) w.line("G00 X" + w.c(h.x) + " Y" + w.c(h.y));
+        if (!at_r) w.line("G00 Z" + w.c(s.r_plane_mm));
+        w.line(w.label(p.index[i]) + "G33.1 X" + w.c(h.x) + " Y" + w.c(h.y) + " Z" + w.c(t.depth_mm) + " K" + w.pitch(t.pitch_mm) +
+               w.trailing_label(p.index[i]));
+        const bool clear = i < p.clear_after.size() && p.clear_after[i];
+        at_r = s.retract_to_r && !clear && i + 1 < p.holes.size();
+        if (!at_r) w.line("G00 Z" + w.c(s.initial_z_mm));
+      }
     } else {
       bool mode_initial = false;
       for (std::size_t i = first; i < p.holes.size(); ++i) {
@@ -505,7 +527,7 @@ void write_program(std::ostream& out, const std::vector<ToolPass>& passes, const
         w.line(text + w.trailing_label(p.index[i]));
       }
     }
-    w.line("G80");
+    if (!taps_by_g33_1(t, s.dialect)) w.line("G80");
     w.line("M09");
     w.line("M05");
     w.line(w.z_home());

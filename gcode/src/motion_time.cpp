@@ -230,7 +230,7 @@ ProgramTime time_program(std::string_view program, const Kinematics& k) {
   Vec pos{0, 0, 0};
   bool absolute = true, inch = false, r_retract = false;
   int motion = 0;  // 0, 1, 2, 3, 38, 73, 81, 82, 83; -1: none (G80)
-  double feed = 0.0, cycle_r = 0.0, cycle_z = 0.0, cycle_q = 0.0, cycle_p = 0.0, initial_z = 0.0;
+  double feed = 0.0, rpm = 0.0, cycle_r = 0.0, cycle_z = 0.0, cycle_q = 0.0, cycle_p = 0.0, initial_z = 0.0;
   bool cycle_active = false, spindle_just_started = false;
   double probe_from_z = 0.0;
   bool probing = false;
@@ -261,7 +261,7 @@ ProgramTime time_program(std::string_view program, const Kinematics& k) {
     }
     const double scale = inch ? 25.4 : 1.0;
     bool machine_coords = false, home = false, dwell = false, set_coords = false, new_cycle = false;
-    std::optional<double> x, y, z, i_off, j_off, r, q, p, f;
+    std::optional<double> x, y, z, i_off, j_off, r, q, p, f, k_word, s_word;
     bool p_integer = false;
     int new_motion = motion;
     for (const Word& w : words) {
@@ -269,6 +269,7 @@ ProgramTime time_program(std::string_view program, const Kinematics& k) {
         case 'G':
           if (is_g(w, 0) || is_g(w, 1) || is_g(w, 2) || is_g(w, 3)) new_motion = static_cast<int>(w.value);
           else if (is_g(w, 38.2) || is_g(w, 38.3) || is_g(w, 38.4) || is_g(w, 38.5)) new_motion = 38;
+          else if (is_g(w, 33.1)) new_motion = 331;
           else if (is_g(w, 73) || is_g(w, 81) || is_g(w, 82) || is_g(w, 83) || is_g(w, 84) || is_g(w, 74) || is_g(w, 85)) {
             new_motion = static_cast<int>(w.value);
             new_cycle = true;
@@ -316,10 +317,13 @@ ProgramTime time_program(std::string_view program, const Kinematics& k) {
         case 'Q': q = w.value; break;
         case 'P': p = w.value, p_integer = w.integer; break;
         case 'F': f = w.value; break;
-        default: break;  // N, S, H, O, L, D: no motion
+        case 'K': k_word = w.value; break;
+        case 'S': s_word = w.value; break;
+        default: break;  // N, H, O, L, D: no motion
       }
     }
     if (f) feed = *f * scale;
+    if (s_word && !dwell) rpm = *s_word;  // (Marlin's "G4 S3" is seconds)
     if (dwell) {
       planner.dwell(p.value_or(0.0) / (k.dwell_p_in_ms ? 1000.0 : 1.0), spindle_just_started);
       spindle_just_started = false;
@@ -393,6 +397,18 @@ ProgramTime time_program(std::string_view program, const Kinematics& k) {
                  from[2] + (target[2] - from[2]) * static_cast<double>(s) / static_cast<double>(segments)});
       }
       feed_to(target);
+    } else if (motion == 331) {
+      // LinuxCNC's rigid tapping (issue 82): over X Y at this height, down to
+      // Z at K a turn of the spindle, which reverses there, and back up to
+      // where it began at the same rate.
+      const double start_z = pos[2];
+      const double rate = k_word.value_or(0.0) * scale * rpm;
+      rapid({target[0], target[1], start_z});
+      planner.line(pos, {pos[0], pos[1], target[2]}, rate, Share::Drilling);
+      pos[2] = target[2];
+      planner.dwell(k.tap_reverse_s, false);
+      planner.line(pos, {pos[0], pos[1], start_z}, rate, Share::Drilling);
+      pos[2] = start_z;
     } else if (motion == 73 || motion == 81 || motion == 82 || motion == 83 || motion == 84 || motion == 74 || motion == 85) {
       if (r) cycle_r = absolute ? *r * scale : pos[2] + *r * scale;
       if (z) cycle_z = target[2];

@@ -327,10 +327,8 @@ void PlanJob::Impl::write_hole_program() {
   }
   std::string text = program.str();
   if (s.break_writer_for_test) text = detail::broken_for_test(std::move(text));
-  std::vector<gcode::Operation> operation_kinds;
-  for (const planning::OperationSpec& spec : o.operations) operation_kinds.push_back(spec.kind);
   detail::check_own_program(self_check(text, holes_written(r.holes, passes, s.resume_from),
-                                       o.tools ? tooling_of_table(*o.tools) : o.tooling, operation_kinds),
+                                       o.tools ? tooling_of_table(*o.tools) : o.tooling, o.operations),
                             s.program_name);
   r.files.program = std::move(text);
   ReportContext ctx{source, s.program_name, placement, loaded.name, &loaded, {}, 1, 1, std::nullopt};

@@ -34,7 +34,7 @@ bool makes(double tool_mm, double milled_r, double hole_mm, const planning::Tool
 
 std::vector<std::string> check_drilled(const gcode::Interpretation& run, const aco::HoleSet& expected,
                                        const planning::Tooling& tooling,
-                                       const std::vector<gcode::Operation>& operation_kinds) {
+                                       const std::vector<planning::OperationSpec>& operations) {
   // Each input hole must be drilled exactly once, at its place (within the
   // program's printed precision), by a tool of its diameter.
   const double tol = run.inch ? 0.00006 * 25.4 + 1e-6 : 0.0006 + 1e-6;
@@ -97,6 +97,15 @@ std::vector<std::string> check_drilled(const gcode::Interpretation& run, const a
     used[*free] = 1;
     made_by[static_cast<std::size_t>(&h - expected.data())] = *free;
     const auto& d = run.holes[*free];
+    if (h.operation != 0 && h.operation <= operations.size()) {
+      const planning::OperationSpec& spec = operations[h.operation - 1];
+      if (spec.kind == gcode::Operation::Tap && spec.pitch_mm > 0 && d.pitch_mm &&
+          std::fabs(*d.pitch_mm - spec.pitch_mm) > 0.01 * spec.pitch_mm) {
+        faults.push_back("hole " + at + ": the tap (line " + std::to_string(d.line) + ") runs at " + gcode::format_short(*d.pitch_mm, 4) +
+                         " mm a turn where the " + (spec.thread.empty() ? std::string("thread") : spec.thread) + "'s pitch is " +
+                         gcode::format_short(spec.pitch_mm, 4) + " mm");
+      }
+    }
     const auto key = std::make_pair(std::llround(h.diameter * 1000.0), h.operation);
     auto [it, inserted] = tool_of_diameter.emplace(key, d.tool);
     // Two tools for one diameter: sister tools (a worn drill replaced) when
@@ -107,11 +116,11 @@ std::vector<std::string> check_drilled(const gcode::Interpretation& run, const a
                        std::to_string(it->second) + " and T" + std::to_string(d.tool));
     }
   }
-  if (!operation_kinds.empty()) {
+  if (!operations.empty()) {
     // A feature's operations share its hole's place exactly: by place, each
     // in its kind's turn (a countersink and a counterbore share theirs).
     auto kind_of = [&](const aco::Hole& h) {
-      return h.operation == 0 || h.operation > operation_kinds.size() ? gcode::Operation::Drill : operation_kinds[h.operation - 1];
+      return h.operation == 0 || h.operation > operations.size() ? gcode::Operation::Drill : operations[h.operation - 1].kind;
     };
     auto turn = [](gcode::Operation k) { return k == gcode::Operation::Counterbore ? static_cast<int>(gcode::Operation::Countersink) : static_cast<int>(k); };
     std::map<std::pair<double, double>, std::vector<std::size_t>> at_place;
@@ -166,6 +175,7 @@ std::vector<std::string> check_same_holes(const gcode::Interpretation& run, cons
     std::uint32_t line;
     int offset;  // the work offset: a second fixture's holes are others at the same X, Y (issue 83)
     std::optional<double> peck, dwell_s;  // a canned cycle's Q and P (gcode::DrilledHole)
+    std::optional<double> pitch;          // a tap's (issue 82): G33.1's K, G84's F over S
   };
   std::vector<Key> want, got;
   for (const gcode::ToolRun& r : expected.runs) {
@@ -174,14 +184,21 @@ std::vector<std::string> check_same_holes(const gcode::Interpretation& run, cons
       const std::optional<double> peck = h.cycle.code == 83 || h.cycle.code == 73 ? h.cycle.q_mm : std::nullopt;
       const std::optional<double> dwell =
           canned ? std::optional<double>(h.cycle.p.empty() ? 0.0 : gcode::dwell_seconds(h.cycle.p, true)) : std::nullopt;
-      want.push_back({r.tool, h.at.x, h.at.y, h.cycle.bottom_mm(), h.line, r.work_offset, peck, dwell});
+      std::optional<double> pitch;
+      if (h.cycle.code == 331) pitch = h.cycle.pitch_mm;
+      else if ((h.cycle.code == 84 || h.cycle.code == 74) && r.spindle_rpm > 0) pitch = h.cycle.feed_mm_min / r.spindle_rpm;
+      want.push_back({r.tool, h.at.x, h.at.y, h.cycle.bottom_mm(), h.line, r.work_offset, peck, dwell, pitch});
     }
   }
-  for (const auto& h : run.holes) got.push_back({h.tool, h.x_mm, h.y_mm, h.bottom_z_mm, h.line, h.work_offset, h.peck_mm, h.dwell_s});
-  // Made the same way where both are canned cycles: the same dwell and peck (issue 83).
+  for (const auto& h : run.holes) {
+    got.push_back({h.tool, h.x_mm, h.y_mm, h.bottom_z_mm, h.line, h.work_offset, h.peck_mm, h.dwell_s, h.pitch_mm});
+  }
+  // Made the same way where both are canned cycles: the same dwell and peck
+  // (issue 83), a tap at the same pitch within 1 % (issue 82).
   auto same_making = [&](const Key& a, const Key& b) {
     return (!a.dwell_s || !b.dwell_s || std::fabs(*a.dwell_s - *b.dwell_s) <= 1e-3) &&
-           (!a.peck || !b.peck || std::fabs(*a.peck - *b.peck) <= tol);
+           (!a.peck || !b.peck || std::fabs(*a.peck - *b.peck) <= tol) &&
+           (!a.pitch || !b.pitch || std::fabs(*a.pitch - *b.pitch) <= 0.01 * *b.pitch);
   };
   auto order = [](const Key& a, const Key& b) { return std::tie(a.x, a.y, a.tool, a.z) < std::tie(b.x, b.y, b.tool, b.z); };
   std::sort(got.begin(), got.end(), order);
@@ -219,7 +236,11 @@ std::vector<std::string> check_same_holes(const gcode::Interpretation& run, cons
                                               : ", dwelling " + gcode::format_number(near->dwell_s.value_or(0), 3) + " s" +
                                                     (near->peck ? " with pecks of " + gcode::format_number(*near->peck, 3) : std::string()) +
                                                     " where the input dwells " + gcode::format_number(w.dwell_s.value_or(0), 3) + " s" +
-                                                    (w.peck ? " with pecks of " + gcode::format_number(*w.peck, 3) : std::string())) +
+                                                    (w.peck ? " with pecks of " + gcode::format_number(*w.peck, 3) : std::string()) +
+                                                    (near->pitch && w.pitch && std::fabs(*near->pitch - *w.pitch) > 0.01 * *w.pitch
+                                                         ? "; tapped at " + gcode::format_short(*near->pitch, 4) + " mm a turn where the input taps at " +
+                                                               gcode::format_short(*w.pitch, 4)
+                                                         : std::string())) +
                        " (line " + std::to_string(near->line) + ")");
       used[static_cast<std::size_t>(near - got.data())] = 1;
     }
@@ -246,9 +267,9 @@ planning::Tooling tooling_of_table(const planning::ToolTable& table) {
 }
 
 std::vector<std::string> self_check(const std::string& program_text, const aco::HoleSet& expected,
-                                    const planning::Tooling& tooling, const std::vector<gcode::Operation>& operation_kinds) {
+                                    const planning::Tooling& tooling, const std::vector<planning::OperationSpec>& operations) {
   try {
-    return check_drilled(gcode::interpret(program_text), expected, tooling, operation_kinds);
+    return check_drilled(gcode::interpret(program_text), expected, tooling, operations);
   } catch (const gcode::ProgramError& e) {
     return {"the program does not read back: line " + std::to_string(e.line()) + ": " + e.what()};
   }

@@ -75,6 +75,10 @@ Machine parse_machine(const std::string& text, const std::string& path) {
     if (!j["spot"].is_boolean()) throw UserError(path, 0, "\"spot\" must be true or false");
     m.spot = j["spot"].get<bool>();
   }
+  if (j.contains("spindle_encoder")) {
+    if (!j["spindle_encoder"].is_boolean()) throw UserError(path, 0, "\"spindle_encoder\" must be true or false");
+    m.spindle_encoder = j["spindle_encoder"].get<bool>();
+  }
   m.start.x = json_number(j, "start_x_mm", m.start.x, path);
   m.start.y = json_number(j, "start_y_mm", m.start.y, path);
   m.x_min = json_number(j, "x_min_mm", m.x_min, path);

@@ -65,6 +65,7 @@ gcode::Tool operation_tool(const OperationSpec& spec, Material material, const M
       t.spindle_rpm = std::min(rpm_for(steel ? 8.0 : 15.0), 1000);
       t.feed_mm_min = spec.pitch_mm * t.spindle_rpm;
       t.cycle = spec.left_hand ? gcode::Cycle::G74 : gcode::Cycle::G84;
+      t.spindle_synchronized = machine.spindle_encoder;
       break;
     }
     case gcode::Operation::Counterbore:

@@ -469,6 +469,7 @@ PlanResult group_holes(const aco::HoleSet& holes, const PlanOptions& options, co
         if (e.tool.pitch_mm == 0) e.tool.pitch_mm = spec.pitch_mm;
         if (e.tool.angle_deg == 0) e.tool.angle_deg = spec.angle_deg;
         if (e.tool.thread.empty()) e.tool.thread = spec.thread;
+        e.tool.spindle_synchronized = d.spindle_synchronized;
       }
       op_entry[k] = found;
     }

@@ -62,7 +62,9 @@ std::vector<ZMove> expand_cycle(const HoleCycle& cycle, double retract_z_mm, std
 
 // How one hole is made. Positions and lengths in mm, work coordinates.
 struct HoleCycle {
-  int code = 0;                // the canned cycle's G number (81, 82, 83, 73, 84, 74, 85..89); 0: expanded
+  // The canned cycle's G number (81, 82, 83, 73, 84, 74, 85..89); 0: expanded;
+  // 331: LinuxCNC's G33.1 rigid tap, from R (where Z was) to Z at pitch_mm a turn and back.
+  int code = 0;
   // Canned cycles: the words as in force at the hole.
   double z_mm = 0.0, r_mm = 0.0;
   std::optional<double> q_mm;  // peck
@@ -70,7 +72,8 @@ struct HoleCycle {
   double feed_mm_min = 0.0;
   std::string extra;           // other cycle words as written, e.g. "I0.1 J0.05 K0.2" (HAAS pecks)
   bool retract_initial = false;  // G98 (else G99)
-  bool rigid = false;          // M29 before the cycle (rigid tapping)
+  bool rigid = false;          // M29 before the cycle (rigid tapping); G33.1
+  double pitch_mm = 0.0;       // G33.1: its K (feed_mm_min is K times the spindle's speed)
   // Expanded drilling: the Z moves made over the hole, from arriving there to leaving.
   std::vector<ZMove> moves;
 

@@ -36,6 +36,9 @@ struct DrilledHole {
   // How a canned cycle makes it (issue 83: verify compares them): its peck (G83, G73 Q) and the seconds
   // it dwells at the bottom (its P); nullopt for expanded drilling, whose G4 P the controls count apart.
   std::optional<double> peck_mm, dwell_s;
+  // A tapped hole's pitch (issue 82: verify checks it): G33.1's K, or G84's
+  // and G74's feed over the spindle's speed; nullopt for any other hole.
+  std::optional<double> pitch_mm;
 };
 
 struct Interpretation {

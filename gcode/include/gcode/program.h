@@ -56,6 +56,9 @@ struct Tool {
   double pitch_mm = 0.0;   // tap
   double angle_deg = 0.0;  // countersink, spot drill: the included angle
   std::string thread;      // tap: "M3", "1/4-20 UNC"
+  // A tap on a spindle with an encoder (Machine::spindle_encoder): LinuxCNC
+  // taps it by G33.1, Z synchronized with the spindle at pitch_mm a turn.
+  bool spindle_synchronized = false;
 };
 
 // One tool's holes in drilling order. `index` gives each hole's 1-based number
@@ -131,6 +134,9 @@ const char* to_string(Operation o);  // "spot", "drill", "ream", "countersink", 
 std::optional<Operation> operation_from_string(const std::string& name);
 // The cycle a canned-cycle control makes a tool's holes with: tapping G84 or G74.
 bool is_tapping(Cycle c);
+// True where the program taps the tool's holes by LinuxCNC's G33.1 (a tap on a
+// spindle with an encoder, Tool::spindle_synchronized) rather than by G84/G74.
+bool taps_by_g33_1(const Tool& tool, Dialect dialect);
 
 // The tool's name, or "6.350 MM DRILL" ("1.000 MM END MILL") made from its diameter.
 std::string tool_name(const Tool& tool);

@@ -7,6 +7,7 @@
 #include "aco/geometry.h"
 #include "gcode/drilling.h"
 #include "gcode/interpreter.h"
+#include "planning/operations.h"
 #include "planning/owned_tools.h"
 #include "planning/tools.h"
 
@@ -21,12 +22,13 @@ namespace job {
 // counts as a hole of 2r + the end mill's diameter (within 0.01 mm) at the
 // helix's centre.
 // Hole features (issue 82): a hole whose aco::Hole::operation is k > 0 is
-// made by operation_kinds[k - 1] at its hole's place, with a tool of its
-// diameter; the operations at one place come in their order (spot, drill,
-// ream, countersink or counterbore, tap).
+// made by operations[k - 1] at its hole's place, with a tool of its
+// diameter (a tap at its thread's pitch, within 1 %, where the program
+// says: G33.1's K, G84's F over S); the operations at one place come in
+// their order (spot, drill, ream, countersink or counterbore, tap).
 std::vector<std::string> check_drilled(const gcode::Interpretation& run, const aco::HoleSet& expected,
                                        const planning::Tooling& tooling = {},
-                                       const std::vector<gcode::Operation>& operation_kinds = {});
+                                       const std::vector<planning::OperationSpec>& operations = {});
 // Within this of the designed diameter, a milled hole is made to size.
 constexpr double kMilledToleranceMm = 0.01;
 
@@ -45,7 +47,7 @@ std::vector<std::string> check_same_holes(const gcode::Interpretation& run, cons
 planning::Tooling tooling_of_table(const planning::ToolTable& table);
 std::vector<std::string> self_check(const std::string& program_text, const aco::HoleSet& expected,
                                     const planning::Tooling& tooling,
-                                    const std::vector<gcode::Operation>& operation_kinds = {});
+                                    const std::vector<planning::OperationSpec>& operations = {});
 std::vector<std::string> self_check(const std::string& program_text, const gcode::DrillingProgram& input);
 
 }  // namespace job

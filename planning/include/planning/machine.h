@@ -44,6 +44,10 @@ struct Machine {
   bool linear_rapids = false;        // HAAS G00 moves each axis at its own rate ("dogleg")
   // Issue 82: this shop spots every drilled hole first (as --spot).
   bool spot = false;
+  // Issue 82: the spindle has an encoder, so LinuxCNC taps by G33.1 (the Z
+  // motion synchronized with the spindle, rigid tapping) instead of G84,
+  // which a LinuxCNC without spindle sync runs only with a floating tap holder.
+  bool spindle_encoder = false;
   // How fast the control takes a corner (GRBL $11: the junction deviation;
   // GRBL's default 0.01 mm where the profile says none) and how finely it
   // cuts arcs into chords ($12, default 0.002 mm): issue 66's time model.
