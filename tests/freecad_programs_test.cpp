@@ -144,6 +144,20 @@ TEST(FreeCadPrograms, AModalQIsStatedWhereverReorderingMovesAHole) {
   auto v = testutil::acodrill_run("verify " + shell_quote(t / "out.nc") + " --holes " + shell_quote(t / "in.nc"));
   EXPECT_EQ(v.code, 1) << v.out;
   EXPECT_THAT(v.out, ::testing::HasSubstr("with pecks of 1.000 where the input dwells 0.000 s with pecks of 2.500"));
+  // Expanded for GRBL, G82's P500 (HAAS: milliseconds) is each hole's G4 P0.500: verify adds up a hole's
+  // G4s and compares them with the input's P, and finds a dwell changed in the output.
+  std::string g82 = with_dwell;
+  for (std::size_t at = g82.find("G82 X"); at != std::string::npos; at = g82.find("G82 X", at + 1)) g82.insert(g82.find(" F100", at), " P500");
+  testutil::spit(t / "in.nc", g82);
+  std::string grbl = plan(g82, "--dialect grbl");
+  EXPECT_THAT(grbl, ::testing::HasSubstr("G4 P0.500"));
+  testutil::spit(t / "out.nc", grbl);
+  EXPECT_EQ(testutil::acodrill_run("verify " + shell_quote(t / "out.nc") + " --holes " + shell_quote(t / "in.nc")).code, 0) << grbl;
+  grbl.replace(grbl.find("G4 P0.500"), 9, "G4 P0.100");
+  testutil::spit(t / "out.nc", grbl);
+  v = testutil::acodrill_run("verify " + shell_quote(t / "out.nc") + " --holes " + shell_quote(t / "in.nc"));
+  EXPECT_EQ(v.code, 1) << v.out;
+  EXPECT_THAT(v.out, ::testing::HasSubstr("dwelling 0.100 s where the input dwells 0.500 s"));
 }
 
 // FreeCAD's grbl post: no T words and no M6 (GRBL has neither); a tool change is a comment.

@@ -156,6 +156,38 @@ TEST(program_test, tapping_and_boring_cycles_keep_their_words) {
   EXPECT_TRUE(h[2]->cycle.p.empty()) << "a new cycle forgets the last one's dwell";
 }
 
+// Issue 83: a cycle without the word it needs, where nothing earlier stated
+// it, is said once (a note by its line) and written as what the control
+// would do: G82 without P dwells 0 s (P0); G83 and G73 without Q drill in one
+// stroke (Q the whole way from R to Z). HAAS's I J K pecks need no Q.
+TEST(program_test, a_cycle_missing_its_word_is_said_once_and_written_as_the_control_runs_it) {
+  const auto p = gcode::read_drilling("G21 G90\nT1 M6\nS900 M3\nG0 X0 Y0 Z10\nG99 G82 X1 Y1 Z-5 R2 F100\nX2\nG80\n"
+                                      "G98 G83 X3 Y3 Z-5 R2 F100\nX4\nG80\nG73 X5 Y5 Z-4 R1 F100\nG80\nG83 X6 Y6 Z-5 R2 I2 J0.5 K1 F100\nG80\nM30\n");
+  const auto h = all_holes(p);
+  ASSERT_EQ(h.size(), 6u);
+  EXPECT_EQ(h[0]->cycle.p, "0");
+  EXPECT_EQ(h[1]->cycle.p, "0");
+  ASSERT_TRUE(h[2]->cycle.q_mm && h[3]->cycle.q_mm && h[4]->cycle.q_mm);
+  EXPECT_DOUBLE_EQ(*h[2]->cycle.q_mm, 7.0);
+  EXPECT_DOUBLE_EQ(*h[3]->cycle.q_mm, 7.0);
+  EXPECT_DOUBLE_EQ(*h[4]->cycle.q_mm, 5.0);
+  EXPECT_FALSE(h[5]->cycle.q_mm) << "HAAS pecks by I J K";
+  ASSERT_EQ(p.notes.size(), 3u);
+  EXPECT_EQ(p.notes[0].line, 5u);
+  EXPECT_THAT(p.notes[0].message, ::testing::HasSubstr("G82 without P"));
+  EXPECT_EQ(p.notes[1].line, 8u);
+  EXPECT_THAT(p.notes[1].message, ::testing::HasSubstr("G83 without Q (its peck) and none in force"));
+  EXPECT_THAT(p.notes[1].message, ::testing::HasSubstr("written as Q7.000"));
+  EXPECT_EQ(p.notes[2].line, 11u);
+  EXPECT_THAT(p.notes[2].message, ::testing::HasSubstr("G73 without Q"));
+  // Written back for LinuxCNC, which refuses a G83 without Q, it has one.
+  gcode::DrillingWriteSettings s;
+  s.dialect = gcode::Dialect::LinuxCnc;
+  std::ostringstream out;
+  gcode::write_drilling(out, p, s);
+  EXPECT_THAT(out.str(), ::testing::HasSubstr("G83 X3.000 Y3.000 Z-5.000 R2.000 Q7.000"));
+}
+
 // LinuxCNC's G33.1 (issue 82): a tapped hole from where Z is, its K the
 // pitch (inch too); refused in one line without K, without Z, from a Z not
 // known, or moving in X/Y at the part's top.

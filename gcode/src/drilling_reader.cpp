@@ -917,6 +917,15 @@ class Reader {
       out_.notes.push_back({lineno_, "G" + std::to_string(cycle_.code) + " without P (its dwell) and none in force: the control dwells 0 s; written as P0"});
       cycle_.p = "0";
     }
+    if ((cycle_.code == 83 || cycle_.code == 73) && !cycle_.q_mm && have_r_ && have_z_ && cycle_.z_mm < cycle_.r_mm &&
+        cycle_.extra.find('I') == std::string::npos) {
+      // A peck cycle without its peck (and no HAAS I J K pecks): LinuxCNC
+      // refuses the line, other controls differ. Said once, and written as
+      // what it can only mean, one stroke to the depth: Q the whole of R to Z.
+      cycle_.q_mm = cycle_.r_mm - cycle_.z_mm;
+      out_.notes.push_back({lineno_, "G" + std::to_string(cycle_.code) + " without Q (its peck) and none in force: LinuxCNC refuses it and other controls differ; drilled in one stroke, written as Q" +
+                                         format_number(*cycle_.q_mm / scale(), inch_ ? 4 : 3)});
+    }
     if (!have_r_) throw ProgramError(lineno_, "canned cycle without an R plane");
     if (!have_z_) throw ProgramError(lineno_, "canned cycle without a depth (Z)");
     if (cycle_.z_mm >= cycle_.r_mm) throw ProgramError(lineno_, "canned cycle depth Z is not below R");
@@ -990,6 +999,15 @@ double HoleCycle::bottom_mm() const {
     if (m.kind == ZMove::Feed) bottom = std::min(bottom, m.z_mm);
   }
   return bottom;
+}
+
+double HoleCycle::dwell_s() const {
+  if (code != 0) return p.empty() ? 0.0 : dwell_seconds(p, true);
+  double total = 0.0;
+  for (const ZMove& m : moves) {
+    if (m.kind == ZMove::Dwell) total += m.dwell_s;
+  }
+  return total;
 }
 
 bool HoleCycle::same_words(const HoleCycle& o) const {

@@ -180,10 +180,8 @@ std::vector<std::string> check_same_holes(const gcode::Interpretation& run, cons
   std::vector<Key> want, got;
   for (const gcode::ToolRun& r : expected.runs) {
     for (const gcode::ProgramHole& h : r.holes) {
-      const bool canned = h.cycle.code != 0;
       const std::optional<double> peck = h.cycle.code == 83 || h.cycle.code == 73 ? h.cycle.q_mm : std::nullopt;
-      const std::optional<double> dwell =
-          canned ? std::optional<double>(h.cycle.p.empty() ? 0.0 : gcode::dwell_seconds(h.cycle.p, true)) : std::nullopt;
+      const std::optional<double> dwell = h.cycle.dwell_s();
       std::optional<double> pitch;
       if (h.cycle.code == 331) pitch = h.cycle.pitch_mm;
       else if ((h.cycle.code == 84 || h.cycle.code == 74) && r.spindle_rpm > 0) pitch = h.cycle.feed_mm_min / r.spindle_rpm;
@@ -193,8 +191,8 @@ std::vector<std::string> check_same_holes(const gcode::Interpretation& run, cons
   for (const auto& h : run.holes) {
     got.push_back({h.tool, h.x_mm, h.y_mm, h.bottom_z_mm, h.line, h.work_offset, h.peck_mm, h.dwell_s, h.pitch_mm});
   }
-  // Made the same way where both are canned cycles: the same dwell and peck
-  // (issue 83), a tap at the same pitch within 1 % (issue 82).
+  // Made the same way: the same dwell, canned or expanded, and where both are
+  // canned cycles the same peck (issue 83); a tap at the same pitch within 1 % (issue 82).
   auto same_making = [&](const Key& a, const Key& b) {
     return (!a.dwell_s || !b.dwell_s || std::fabs(*a.dwell_s - *b.dwell_s) <= 1e-3) &&
            (!a.peck || !b.peck || std::fabs(*a.peck - *b.peck) <= tol) &&

@@ -78,6 +78,9 @@ struct HoleCycle {
   std::vector<ZMove> moves;
 
   double bottom_mm() const;    // the deepest Z the tool reaches
+  // Seconds it dwells at the hole: a canned cycle's P (dwell_seconds), or the
+  // G4s of expanded drilling made while the tool is in it, added up.
+  double dwell_s() const;
   bool same_words(const HoleCycle& other) const;  // canned: the same cycle and words
 };
 

@@ -33,8 +33,9 @@ struct DrilledHole {
   // (the hole is 2 r plus the tool's diameter); 0: drilled or plunged.
   double milled_radius_mm = 0.0;
   int work_offset = 54;    // the work offset it is drilled in (drilling.h, work_offset_text)
-  // How a canned cycle makes it (issue 83: verify compares them): its peck (G83, G73 Q) and the seconds
-  // it dwells at the bottom (its P); nullopt for expanded drilling, whose G4 P the controls count apart.
+  // How it is made (issue 83: verify compares them): a canned cycle's peck
+  // (G83, G73 Q; nullopt for others and for expanded drilling), and the
+  // seconds it dwells there (HoleCycle::dwell_s: its P, or its G4s).
   std::optional<double> peck_mm, dwell_s;
   // A tapped hole's pitch (issue 82: verify checks it): G33.1's K, or G84's
   // and G74's feed over the spindle's speed; nullopt for any other hole.
