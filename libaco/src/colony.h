@@ -262,6 +262,8 @@ class Colony {
   // route; before the run has ended it ends it there ("stopped").
   void start();
   bool advance(Team& team, int max_iterations, double until_s);
+  // A stop asked, or the time limit reached: what ends the run, and the searches in it.
+  bool must_end() const;
   Solution finish();
   int completed() const { return run_.completed; }
   Order best_order() const { return to_order(run_.best_route); }

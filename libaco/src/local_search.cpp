@@ -275,6 +275,7 @@ void LocalSearcher::improve(std::vector<HoleIndex>& route, Moves moves) {
   m_ = route.size();
   gain_ = 0.0;
   forgot_ = true;  // searched() tells of improve_from alone: windows here clear the queue
+  interrupted_ = false;
   if (m_ < 4 || cand_.k == 0) return;
   load(route);
   std::fill(queued_.begin(), queued_.end(), 0);
@@ -291,7 +292,7 @@ void LocalSearcher::improve(std::vector<HoleIndex>& route, Moves moves) {
       head_ = 0;
       for (std::size_t p = lo_; p <= hi_; ++p) push(route_[p]);
       run_queue(moves);
-      if (hi_ == m_ - 1) break;
+      if (hi_ == m_ - 1 || interrupted_) break;
     }
   }
   unload(route);
@@ -314,6 +315,14 @@ void LocalSearcher::improve_from(std::vector<HoleIndex>& route, Moves moves, con
 
 void LocalSearcher::run_queue(Moves moves) {
   while (head_ < queue_.size()) {
+    if (due_ && (++since_asked_ & 63) == 0 && due_()) {
+      // Stopped: the holes still queued are unqueued, unsearched.
+      for (std::size_t k = head_; k < queue_.size(); ++k) queued_[queue_[k]] = 0;
+      head_ = queue_.size();
+      interrupted_ = true;
+      forgot_ = true;
+      return;
+    }
     const HoleIndex a = queue_[head_++];
     queued_[a] = 0;
     if (windowed_ && !in_window(pos_[a])) continue;

@@ -8,6 +8,7 @@
 // its direction-dependent edges stay right.
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "candidates.h"
@@ -56,6 +57,12 @@ class alignas(64) LocalSearcher {
   // on a million holes whole-route search is quadratic; windows keep every
   // move's cost bounded and the pass linear.
   void improve(std::vector<HoleIndex>& route, Moves moves);
+  // Ends improve() early once `due()` is true (asked every 64 holes searched):
+  // the route stays whole, as improved as it got. For a stop or a time limit
+  // (issue 84: the first tour's search of 10^5 holes took seconds no Stop
+  // could end), never for a slice's end, which must not change the result.
+  void interrupt_when(std::function<bool()> due) { due_ = std::move(due); }
+  bool interrupted() const { return interrupted_; }
   // The same, looking only where something changed: the queue starts with
   // `seeds` (the ends of an ant's new edges) and grows only where moves are
   // made, so the search costs what the ant changed, plus O(n) to load the route.
@@ -254,6 +261,9 @@ class alignas(64) LocalSearcher {
   const std::vector<HoleIndex>* restrict_route_ = nullptr;
   const std::vector<std::uint32_t>* restrict_pos_ = nullptr;
   std::size_t failed_audits_ = 0, audited_searches_ = 0;
+  std::function<bool()> due_;
+  bool interrupted_ = false;
+  std::uint32_t since_asked_ = 0;
 };
 
 }  // namespace aco::detail

@@ -27,6 +27,9 @@ void Colony::start() {
                                                           : Moves::TwoOpt;
   if (s.use_ls) {
     LocalSearcher ls(space_, cand_);
+    // A stop or the time limit ends this search too: at 10^5 holes and more
+    // it is the run's longest step (issue 84).
+    ls.interrupt_when([this] { return must_end(); });
     ls.improve(s.best_route, s.moves);
   }
   s.best_len = space_.route_cost(s.best_route);
@@ -47,7 +50,10 @@ void Colony::start() {
   if (!s.focused) refresh_choice();  // focused ants weigh their few rows as they go
   if (s.focused) {
     set_reference(s.best_route);
-    if (s.use_ls) kick_searcher_ = std::make_unique<LocalSearcher>(space_, cand_);
+    if (s.use_ls) {
+      kick_searcher_ = std::make_unique<LocalSearcher>(space_, cand_);
+      kick_searcher_->interrupt_when([this] { return must_end(); });
+    }
   }
   ref_len_ = s.best_len;
 
@@ -56,7 +62,12 @@ void Colony::start() {
   s.workers = std::vector<AntWork>(static_cast<std::size_t>(p_.threads));
   if (s.use_ls) {
     s.searchers.reserve(static_cast<std::size_t>(p_.threads));
-    for (int t = 0; t < p_.threads; ++t) s.searchers.emplace_back(space_, cand_);
+    for (int t = 0; t < p_.threads; ++t) {
+      s.searchers.emplace_back(space_, cand_);
+      // An ant's search from a route the first search left unfinished (ended
+      // by the limit) would finish it: seconds at 10^5 holes. It ends too.
+      s.searchers.back().interrupt_when([this] { return must_end(); });
+    }
     // A focused ant's 3-opt or 5-opt step starts off the reference, which
     // stays where it is for the run (set_reference rewrites it in place).
     if (s.focused && uses_lkh_stall_answers(n_)) {
@@ -71,6 +82,10 @@ void Colony::start() {
   s.scale_of_ant.resize(static_cast<std::size_t>(p_.ants));
   order_ants();
   s.ended = p_.iterations < 1;
+}
+
+bool Colony::must_end() const {
+  return (p_.stop != nullptr && p_.stop->load()) || (p_.time_limit_s > 0.0 && clock_.seconds() >= p_.time_limit_s);
 }
 
 bool Colony::advance(Team& team, int max_iterations, double until_s) {
