@@ -189,6 +189,101 @@ async function fresh(context) {
   saved = await planAndSave(page);
   check(saved.bytes.equals(cli([plate], ['--iterations', '40', '--seed', '3'])), 'after a bad file a good one plans');
 
+  // 7. One job at a time (issue 84): while a plan runs, the inputs, Reset and
+  // every setting are disabled; what is saved is the job the results name.
+  await page.getByRole('button', { name: 'Reset settings' }).click();
+  await page.getByLabel('Random holes', { exact: true }).fill('20000');
+  await page.getByRole('button', { name: 'Random plate', exact: true }).click();
+  await page.waitForFunction(() => /20000 holes/.test(document.getElementById('holes-info').textContent), null, { timeout: 60000 });
+  await page.getByRole('button', { name: 'Plan', exact: true }).click();
+  await page.waitForFunction(() => !document.getElementById('stop').disabled, null, { timeout: 30000 });
+  const locked = await page.evaluate(() => ['files', 'sample', 'random', 'random-holes', 'reset', 'set-machine', 'set-dialect',
+                                              'set-origin', 'set-iterations', 'set-processes', 'set-round_contours']
+    .filter((id) => !document.getElementById(id).disabled));
+  check(locked.length === 0, 'while a plan runs every input and setting is disabled; not: ' + locked.join(' '));
+  check(await page.evaluate(() => document.activeElement && document.activeElement.id) === 'stop', 'focus moves from Plan to Stop');
+  await page.getByRole('button', { name: 'Stop', exact: true }).click();
+  await page.waitForFunction(() => !document.getElementById('save-program').disabled, null, { timeout: 60000 });
+  check(await page.evaluate(() => document.activeElement && document.activeElement.id) === 'plan', 'focus goes back to Plan');
+  const heading = await page.locator('#results-heading').textContent();
+  check(heading.includes('random-20000.csv') && heading.includes('vf2 (HAAS VF-2') && heading.includes('HAAS'), 'the results name the job, machine and dialect: ' + heading);
+  const [job] = await Promise.all([page.waitForEvent('download'), page.getByRole('button', { name: 'Save program' }).click()]);
+  check(job.suggestedFilename() === 'random-20000.nc', 'the program saved is the job planned: ' + job.suggestedFilename());
+
+  // 8. Another CAM's program (Fusion 360 for LinuxCNC, inch) plans with the
+  // default settings to acodrill plan's bytes, its tools and holes shown.
+  const camProgram = path.join(root, 'tests', 'data', 'real-gcode', 'fusion360_linuxcnc_romeo1_spot_drill.ngc');
+  await page.getByRole('button', { name: 'Reset settings' }).click();
+  await page.getByLabel('Input files', { exact: true }).setInputFiles(camProgram);
+  await page.waitForFunction(() => /7 holes, [1-9]/.test(document.getElementById('holes-info').textContent), null, { timeout: 30000 });
+  const camHoles = await page.locator('#holes-info').textContent();
+  check(!/X 0\.000\.\.0\.000/.test(camHoles), 'the program\'s holes have an extent: ' + camHoles.slice(0, 120));
+  await fill(page, { Iterations: '20', Seed: '2' });
+  saved = await planAndSave(page);
+  check(saved.bytes.equals(cli([camProgram], ['--iterations', '20', '--seed', '2'])),
+        'a CAM program with the defaults: acodrill plan\'s bytes (its own units and coordinates)');
+  check(saved.bytes.toString().includes('G20'), 'the program stays in inch');
+  check((await page.locator('#results-heading').textContent()).includes('own style'), 'the results say the program keeps its style');
+  check(await page.getByLabel('Input files', { exact: true }).inputValue() === '', 'the file box is cleared: the same file chosen again reads again');
+
+  // 9. Messages name the page's controls, never a command-line option, and
+  // the DXF controls plan what the command line plans with them.
+  const contours = path.join(root, 'tests', 'data', 'dxf-contours', 'openscad_r12_line_polygons.dxf');
+  await page.getByLabel('Input files', { exact: true }).setInputFiles(contours);
+  await page.waitForFunction(() => !document.getElementById('error').hidden, null, { timeout: 30000 });
+  const contourError = await page.getByRole('alert', { name: 'Error' }).textContent();
+  check(contourError.includes('\u201cRound contours\u201d') && !contourError.includes('--'), 'the error names the control: ' + contourError);
+  await page.getByLabel('Round contours', { exact: true }).check();
+  await fill(page, { Iterations: '10', Seed: '1' });
+  saved = await planAndSave(page);
+  check(saved.bytes.equals(cli([contours], ['--round-contours', '--iterations', '10', '--seed', '1'])), 'Round contours: acodrill plan --round-contours\'s bytes');
+  await page.getByLabel('Round contours', { exact: true }).uncheck();
+  const onshape = path.join(root, 'tests', 'data', 'dxf-contours', 'onshape_inch_header_mm_drawing.dxf');
+  await page.getByLabel('Input files', { exact: true }).setInputFiles(onshape);
+  await page.waitForFunction(() => !document.getElementById('error').hidden, null, { timeout: 30000 });
+  const travelError = await page.getByRole('alert', { name: 'Error' }).textContent();
+  check(travelError.includes('\u201cMachine\u201d') && !travelError.includes('--'), 'the error names the control: ' + travelError);
+  await fill(page, { 'DXF units': 'mm' });
+  saved = await planAndSave(page);
+  check(saved.bytes.equals(cli([onshape], ['--dxf-units', 'mm', '--iterations', '10', '--seed', '1'])), 'DXF units: acodrill plan --dxf-units\'s bytes');
+  await page.getByLabel('Random holes', { exact: true }).fill('1000000');
+  await page.getByRole('button', { name: 'Random plate', exact: true }).click();
+  const clamped = await page.getByRole('alert', { name: 'Error' }).textContent();
+  check(clamped.includes('Random holes: from 2 to 200 000'), 'a number out of range is said, not clamped: ' + clamped);
+
+  check(!/--/.test(await page.evaluate(() => document.body.innerText)), 'nothing the page says names a command-line option ("--")');
+
+  // 10. A layout for the screen it is on (issue 84): after a file is opened,
+  // Plan and the progress are in the viewport on a laptop's 1366x768 and on a
+  // 390x844 phone, and stay there while a plan runs and while the settings
+  // are scrolled to; the page is never wider than the screen. Screenshots of
+  // both are left in build-web/ to look at.
+  for (const [w, h] of [[1366, 768], [390, 844]]) {
+    const small = await context.newPage();
+    await small.setViewportSize({ width: w, height: h });
+    await small.goto(url);
+    await small.waitForSelector('body[data-ready="1"]', { timeout: 30000 });
+    await small.getByLabel('Input files', { exact: true }).setInputFiles(plate);
+    await small.waitForFunction(() => /70 holes/.test(document.getElementById('holes-info').textContent), null, { timeout: 30000 });
+    const inView = async () => small.evaluate(() => ['plan', 'progress-text'].every((id) => {
+      const r = document.getElementById(id).getBoundingClientRect();
+      return r.width > 0 && r.top >= 0 && r.bottom <= window.innerHeight && r.left >= 0 && r.right <= window.innerWidth;
+    }));
+    check(await inView(), w + 'x' + h + ': Plan and the progress are in view after opening a file');
+    await small.getByLabel('Seed', { exact: true }).scrollIntoViewIfNeeded();
+    check(await inView(), w + 'x' + h + ': and while the settings are scrolled to');
+    await small.getByLabel('Iterations', { exact: true }).fill('3000');
+    await small.getByRole('button', { name: 'Plan', exact: true }).click();
+    await small.waitForFunction(() => /iteration \d+/.test(document.getElementById('progress-text').textContent), null, { timeout: 60000 });
+    check(await inView(), w + 'x' + h + ': and while it plans');
+    await small.screenshot({ path: path.join(path.dirname(page_html), 'page-' + w + 'x' + h + '.png') });
+    await small.getByRole('button', { name: 'Stop', exact: true }).click();
+    await small.waitForFunction(() => !document.getElementById('save-program').disabled, null, { timeout: 60000 });
+    const wide = await small.evaluate(() => document.documentElement.scrollWidth - window.innerWidth);
+    check(wide <= 0, w + 'x' + h + ': with the results shown the page is not wider than the screen (' + wide + ' px over)');
+    await small.close();
+  }
+
   check(errors.length === 0, 'no script error: ' + errors.join('; '));
   check(outside.length === 0, 'no request leaves file:, data: or blob:: ' + outside.join(' '));
   await browser.close();

@@ -12,9 +12,9 @@
       'Rapids, accelerations, tool changes and travel of the machine: they set the time estimate, the generated tools\u2019 speeds and the dialect.'],
     ['dialect', 'Dialect', 'select', [['', 'the machine\u2019s'], ['haas', 'HAAS'], ['fanuc', 'Fanuc'], ['linuxcnc', 'LinuxCNC'], ['grbl', 'GRBL, grblHAL, FluidNC'], ['marlin', 'Marlin']],
       'HAAS, Fanuc and LinuxCNC drill with canned cycles (G81/G83) and change tools with M6; GRBL and Marlin get every hole as G0/G1 moves and a pause naming each drill.'],
-    ['units', 'Units', 'select', [['mm', 'mm'], ['inch', 'inch']], 'Units of the program (a G-code program input keeps its own).'],
-    ['origin', 'Origin', 'select', [['lower-left', 'lower left of the holes'], ['center', 'centre of the holes'], ['upper-left', 'upper left of the holes'], ['drawing', 'the drawing\u2019s own zero']],
-      'Program zero (X0 Y0): where the machinist sets the work offset. Also X,Y in mm with the command line.'],
+    ['units', 'Units', 'select', [['', 'mm; a G-code program its own'], ['mm', 'mm'], ['inch', 'inch']], 'Units of the program written. By default mm, and a G-code program input keeps its own units and style.'],
+    ['origin', 'Origin', 'select', [['', 'lower left of the holes; a G-code program as it has them'], ['lower-left', 'lower left of the holes'], ['center', 'centre of the holes'], ['upper-left', 'upper left of the holes'], ['drawing', 'the drawing\u2019s own zero']],
+      'Program zero (X0 Y0): where the machinist sets the work offset. A G-code program input keeps its own coordinates (its work offset was set for them): leave this at the first choice.'],
     ['material', 'Material', 'select', [['', 'steel; PCB for drill files'], ['steel', 'steel'], ['aluminium', 'aluminium'], ['pcb', 'PCB']], 'Feeds and speeds of the generated tools.'],
     ['thickness', 'Thickness', 'number', 'mm', 'Part thickness in mm (default 6.35, or 1.6 for PCB): how deep each hole is drilled.'],
     ['default_diameter', 'Default diameter', 'number', 'mm', 'Diameter in mm of the holes an input gives none (CSV rows without one, TSPLIB nodes).'],
@@ -23,7 +23,10 @@
     ['probe_plate', 'Touch plate', 'number', 'mm', 'Thickness of a touch plate: after each tool change GRBL, Marlin and LinuxCNC programs probe Z on it.'],
     ['side', 'Side', 'select', [['front', 'front'], ['back', 'back (mirrored)']], 'Drill the board from its back: the holes mirrored about the vertical line through their centre.'],
     ['alignment_pins', 'Alignment pins', 'number', 'mm', 'Two pin holes of this diameter on the mirror line, drilled first, to register the board when it is turned over.'],
-    ['processes', 'Processes', 'file', '.json', 'A process table (JSON, as --processes): which hole features of a drawing are spotted, drilled, reamed, countersunk, counterbored or tapped, and with what.'],
+    ['dxf_units', 'DXF units', 'select', [['', 'as the DXF says ($INSUNITS; mm if it does not)'], ['mm', 'mm'], ['cm', 'cm'], ['m', 'm'], ['inch', 'inch'], ['feet', 'feet']],
+      'The unit a DXF is drawn in, whatever its header says (Onshape and some Fusion exports say inch for a drawing made in mm).'],
+    ['round_contours', 'Round contours', 'checkbox', '', 'Also drill round closed contours drawn without a CIRCLE (a circle of LINEs, ARCs, a SPLINE or a polyline) as holes of their size.'],
+    ['processes', 'Processes', 'file', '.json', 'A process table (JSON, the one acodrill plan\u2019s processes option takes): which hole features of a drawing are spotted, drilled, reamed, countersunk, counterbored or tapped, and with what.'],
     ['panel', 'Panel', 'text', 'e.g. 3x2', 'Drill copies of the board as one job: COLSxROWS, with the pitch.'],
     ['pitch', 'Pitch', 'text', 'e.g. 60,40', 'DX,DY in mm between panel copies.'],
     ['time_limit', 'Time limit', 'number', 'seconds', 'Stop the colony after this many seconds (empty: it stops by itself).'],
@@ -36,7 +39,10 @@
   ];
   const STORE = 'acodrill.settings.v1';
   const EXT = { haas: 'nc', fanuc: 'nc', linuxcnc: 'ngc', grbl: 'nc', marlin: 'gcode' };
-  const COLOURS = ['#1f77b4', '#d62728', '#2ca02c', '#9467bd', '#ff7f0e', '#17becf', '#8c564b', '#e377c2', '#7f7f7f', '#bcbd22'];
+  // 24 colours a tool, told apart (issue 84: with 10, T1 and T11 were both red); beyond, the table's swatch and number say which.
+  const COLOURS = ['#1f77b4', '#d62728', '#2ca02c', '#9467bd', '#ff7f0e', '#17becf', '#8c564b', '#e377c2', '#7f7f7f', '#bcbd22',
+                   '#393b79', '#ad494a', '#637939', '#7b4173', '#8c6d31', '#3182bd', '#e6550d', '#31a354', '#756bb1', '#636363',
+                   '#843c39', '#6baed6', '#fd8d3c', '#74c476'];
 
   function buildForm() {
     for (const [key, label, kind, choices, help, advanced] of SETTINGS) {
@@ -66,6 +72,9 @@
           fileSettings[key] = f ? { name: f.name, text: await f.text() } : null;
           if (files.length && $('stop').disabled) preview();
         });
+      } else if (kind === 'checkbox') {
+        input = document.createElement('input');
+        input.type = 'checkbox';
       } else {
         input = document.createElement('input');
         input.type = kind === 'number' ? 'number' : 'text';
@@ -88,7 +97,8 @@
   function settings() {
     const s = {};
     for (const [key, , kind] of SETTINGS) {
-      if (kind !== 'file') s[key] = $('set-' + key).value.trim();
+      if (kind === 'checkbox') s[key] = $('set-' + key).checked ? 'on' : '';
+      else if (kind !== 'file') s[key] = $('set-' + key).value.trim();
       else if (fileSettings[key]) s[key] = fileSettings[key].text, s[key + '_name'] = fileSettings[key].name;
     }
     return s;
@@ -102,7 +112,10 @@
     let s = null;
     try { s = JSON.parse(localStorage.getItem(STORE) || 'null'); } catch (e) { s = null; }
     if (!s) return;
-    for (const [key, , kind] of SETTINGS) if (kind !== 'file' && typeof s[key] === 'string') $('set-' + key).value = s[key];
+    for (const [key, , kind] of SETTINGS) {
+      if (kind === 'checkbox') $('set-' + key).checked = s[key] === 'on';
+      else if (kind !== 'file' && typeof s[key] === 'string') $('set-' + key).value = s[key];
+    }
   }
 
   // --- the worker -------------------------------------------------------
@@ -129,18 +142,40 @@
   let result = null;     // what aco_finish said
   let chart = null, chartData = null, chartTools = 0;
   let started = 0;
+  let planned = null;    // the job the results are of: its name, files and machine, taken at Plan
 
+  // acodrill's messages name its command-line options; here each is the
+  // control of this page that means the same (issue 84), and an option the
+  // page has no control for is named as the command line's.
+  const CONTROL_OF_OPTION = {
+    'probe-plate': 'Touch plate', drills: 'Drills owned', 'end-mill': 'End mill', machine: 'Machine', dialect: 'Dialect',
+    units: 'Units', origin: 'Origin', material: 'Material', thickness: 'Thickness', 'default-diameter': 'Default diameter',
+    side: 'Side', 'alignment-pins': 'Alignment pins', processes: 'Processes', panel: 'Panel', pitch: 'Pitch',
+    'time-limit': 'Time limit', iterations: 'Iterations', seed: 'Seed', algorithm: 'Algorithm', alpha: 'Alpha',
+    beta: 'Beta', ants: 'Ants', 'round-contours': 'Round contours', 'dxf-units': 'DXF units',
+  };
+  function inPageTerms(message) {
+    return String(message).replace(/--([a-z][a-z0-9-]*)/g, (all, option) => CONTROL_OF_OPTION[option]
+      ? '\u201c' + CONTROL_OF_OPTION[option] + '\u201d' : 'the command line\u2019s \u201c' + option + '\u201d option');
+  }
   function showError(text) {
     const e = $('error');
-    e.textContent = text ? 'acodrill: error: ' + text : '';
+    e.textContent = text ? 'acodrill: error: ' + inPageTerms(text) : '';
     e.hidden = !text;
   }
   function status(text) { $('status').textContent = text; }
+  const DIALECT_NAMES = { haas: 'HAAS', fanuc: 'Fanuc', linuxcnc: 'LinuxCNC', grbl: 'GRBL', marlin: 'Marlin' };
+  function dialectName(d) { return DIALECT_NAMES[d] || d || 'HAAS'; }
   function stem(name) { return name.replace(/^.*[\\/]/, '').replace(/\.[^.]*$/, '') || 'job'; }
   function jobName() { return files.map((f) => stem(f.name)).join('+') || 'job'; }
 
   function setFiles(list) {
+    if (planning) return;  // (the controls are disabled; a drop is refused in its handler)
     files = list;
+    view = null;
+    $('plan').disabled = true;  // until the files read
+    resetChart();
+    $('progress-text').textContent = 'No run yet.';
     result = null;
     routes = null;
     enableSaves(false);
@@ -158,7 +193,7 @@
   function onWorker(msg) {
     if (msg.cmd === 'ready') {
       workerReady = true;
-      $('plan').disabled = false;
+      $('plan').disabled = !planReady();
       document.body.dataset.ready = '1';
       status('Ready.');
       preview();
@@ -185,6 +220,7 @@
       showError('');
       view = msg.result;
       routes = null;
+      if (!planning) $('plan').disabled = !planReady();
       drawHoles();
       describeHoles();
       status(msg.planning ? 'Planning\u2026' : 'Read ' + (view.holes.length / 3 - operationsOf(view)) + ' holes.');
@@ -214,12 +250,32 @@
       enableSaves(true);
       status((result.stopped ? 'Stopped: the best routes so far. ' : 'Done. ') + result.iterations + ' iterations in ' +
              result.solver_wall_s.toFixed(2) + ' s.');
+      // The progress line ends with what was planned, not a value from the middle of the run.
+      $('progress-text').textContent = (result.stopped ? 'Stopped' : 'Done') + ': ' + result.iterations + ' iterations in ' +
+        result.solver_wall_s.toFixed(2) + ' s; route ' + result.optimized.travel_mm.toFixed(1) + ' mm of travel.';
     }
   }
 
+  // One job at a time (issue 84): while a plan runs, nothing that changes
+  // the job can be changed; what is saved is the job the results show.
+  let planning = false;
+  // Plan only with holes open: files read without an error, no plan running.
+  function planReady() { return workerReady && files.length > 0 && view !== null && !planning; }
+  function jobControls() {
+    return [$('files'), $('sample'), $('random'), $('random-holes'), $('reset'),
+            ...SETTINGS.map(([key]) => $('set-' + key))];
+  }
   function running(on) {
-    $('plan').disabled = on || !workerReady;
+    const hadFocus = document.activeElement;
+    planning = on;
+    $('plan').disabled = on || !planReady();
     $('stop').disabled = !on;
+    for (const el of jobControls()) el.disabled = on;
+    $('drop').classList.toggle('locked', on);
+    document.body.dataset.planning = on ? '1' : '';
+    // Keep the keyboard where the user is: from Plan to Stop and back.
+    if (on && (hadFocus === $('plan') || hadFocus === document.body)) $('stop').focus();
+    if (!on && (hadFocus === $('stop') || hadFocus === document.body || !hadFocus)) $('plan').focus();
   }
 
   function plan() {
@@ -236,6 +292,11 @@
     started = performance.now();
     const s = settings();
     s.program_name = jobName() + '.' + (EXT[s.dialect] || 'nc');
+    const machineSelect = $('set-machine');
+    // The machine as plan resolves an empty choice: the router for GRBL and Marlin, else the VF-2.
+    const machine = s.machine || (s.dialect === 'grbl' || s.dialect === 'marlin' ? 'router' : 'vf2');
+    planned = { name: jobName(), files: files.map((f) => f.name).join(', '),
+                machine: [...machineSelect.options].find((o) => o.value === machine).text.replace(/: (.*)$/, ' ($1)') };
     const copies = files.map((f) => ({ name: f.name, bytes: f.bytes.slice(0) }));
     planId = send({ cmd: 'plan', files: copies, settings: s }, copies.map((c) => c.bytes));
     $('progress-text').textContent = 'Reading the files\u2026';
@@ -262,10 +323,12 @@
     if (!chart) {
       const series = [{ label: 'seconds' }];
       for (let t = 0; t < chartTools; t++) {
-        series.push({ label: 'tool ' + (t + 1), stroke: COLOURS[t % COLOURS.length], spanGaps: false, points: { show: false } });
+        // A marker at each point: a tool routed within one slice is one point, seen.
+        series.push({ label: 'tool ' + (t + 1), stroke: COLOURS[t % COLOURS.length], spanGaps: false, points: { show: true, size: 5 } });
       }
-      const width = Math.max(280, Math.min(860, $('chart').clientWidth || 600));
-      chart = new uPlot({ title: 'Best route of each tool (mm) against time (s)', width, height: 220, series,
+      const width = Math.max(260, Math.min(860, $('chart').clientWidth || 600));
+      const narrow = window.matchMedia('(max-width: 900px)').matches;  // in the bar at the bottom of a phone's screen
+      chart = new uPlot({ title: narrow ? 'Best route (mm) by time (s)' : 'Best route of each tool (mm) against time (s)', width, height: narrow ? 110 : 200, series, legend: { live: false, show: !narrow },
         axes: [{ label: 's' }, { label: 'mm' }], scales: { x: { time: false } } }, chartData, $('chart'));
     } else {
       chart.setData(chartData);
@@ -281,9 +344,11 @@
   }
   function fit(canvas, xyd) {
     let x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity;
+    // The holes' extent, radii included: a large hole at the edge is drawn whole.
     for (let i = 0; i < xyd.length; i += 3) {
-      x0 = Math.min(x0, xyd[i]); x1 = Math.max(x1, xyd[i]);
-      y0 = Math.min(y0, xyd[i + 1]); y1 = Math.max(y1, xyd[i + 1]);
+      const r = 0.5 * (xyd[i + 2] || 0);
+      x0 = Math.min(x0, xyd[i] - r); x1 = Math.max(x1, xyd[i] + r);
+      y0 = Math.min(y0, xyd[i + 1] - r); y1 = Math.max(y1, xyd[i + 1] + r);
     }
     const pad = 12, w = canvas.width - 2 * pad, h = canvas.height - 2 * pad;
     const k = Math.min(w / Math.max(1e-9, x1 - x0), h / Math.max(1e-9, y1 - y0));
@@ -366,8 +431,17 @@
     box.appendChild(text('p', (view.holes.length / 3 - operations) + ' holes' + (operations ? ' and ' + operations + ' operations at them' : '') +
       ', ' + view.tools.length + ' tool(s); holes X ' + e[0].toFixed(3) +
       '..' + e[2].toFixed(3) + ', Y ' + e[1].toFixed(3) + '..' + e[3].toFixed(3) + ' mm (program coordinates)'));
-    box.appendChild(table(['Tool', 'Diameter mm', 'Holes'], view.tools.map((t) => [t.name || ('T' + t.number),
-      t.diameter_mm.toFixed(3) + (t.end_mill ? ' end mill' : ''), String(t.holes.length)]), 'Tools (colours as drawn)'));
+    const tools = table(['Tool', 'Diameter mm', 'Holes'], view.tools.map((t) => ['T' + t.number + ' ' + (t.name || ''),
+      t.diameter_mm ? t.diameter_mm.toFixed(3) + (t.end_mill ? ' end mill' : '') : 'not said', String(t.holes.length)]), 'Tools (colours as drawn)');
+    tools.querySelectorAll('tr').forEach((tr, k) => {
+      if (k === 0) return;
+      const swatch = document.createElement('span');
+      swatch.className = 'swatch';
+      swatch.style.background = COLOURS[(k - 1) % COLOURS.length];
+      swatch.setAttribute('aria-hidden', 'true');
+      tr.firstChild.prepend(swatch);
+    });
+    box.appendChild(tools);
     const ops = new Set(view.tools.map((t) => t.operation || 'drill'));
     if (ops.size > 1 || !ops.has('drill')) {
       const legend = {
@@ -392,18 +466,26 @@
     }
     for (const d of view.drill_map || []) notes.push(d.toLowerCase());
     const ul = document.createElement('ul');
-    for (const n of notes.slice(0, 50)) ul.appendChild(text('li', n));
+    for (const n of notes.slice(0, 50)) ul.appendChild(text('li', inPageTerms(n)));
     if (notes.length > 50) ul.appendChild(text('li', (notes.length - 50) + ' more (see the report)'));
     box.appendChild(ul);
   }
   function showResults() {
     const body = $('results-body');
     body.textContent = '';
+    const heading = text('h3', 'Results: ' + planned.files + ' on ' + planned.machine + ', ' +
+                                  (result.kept_style ? 'in the input program\u2019s own style' : dialectName(result.dialect)));
+    heading.id = 'results-heading';
+    body.appendChild(heading);
     const min = (s) => (s / 60).toFixed(2);
     const row = (label, st) => [label, st.travel_mm.toFixed(1), min(st.moves_s), min(st.drilling_s), min(st.tool_changes_s), min(st.pauses_s), min(st.time_s)];
-    body.appendChild(table(['Order', 'Travel mm', 'Moves min', 'Drilling min', 'Tool changes min', 'Pauses min', 'Total min'],
+    // In a box of its own that scrolls sideways on a narrow screen, never widening the page.
+    const times = document.createElement('div');
+    times.className = 'scroll';
+    times.appendChild(table(['Order', 'Travel mm', 'Moves min', 'Drilling min', 'Tool changes min', 'Pauses min', 'Total min'],
       [row(result.program_input ? 'input program' : 'input order', result.input_order), row('nearest neighbour', result.nearest_neighbor),
        row('optimized', result.optimized)], 'Where the time goes'));
+    body.appendChild(times);
     const saved = result.input_order.time_s > 0 ? (100 * (result.input_order.time_s - result.optimized.time_s) / result.input_order.time_s) : 0;
     body.appendChild(text('p', 'Saved against the input order: ' + (result.input_order.travel_mm - result.optimized.travel_mm).toFixed(1) +
       ' mm of travel, ' + saved.toFixed(1) + ' % of the time.'));
@@ -459,36 +541,53 @@
   // --- wiring ---------------------------------------------------------------
   buildForm();
   loadSettings();
-  $('settings').addEventListener('change', () => { saveSettings(); if (files.length && $('stop').disabled) preview(); });
+  $('settings').addEventListener('change', () => { saveSettings(); if (files.length && !planning) preview(); });
   $('reset').addEventListener('click', () => {
+    if (planning) return;
     try { localStorage.removeItem(STORE); } catch (e) { /* nothing kept */ }
-    for (const [key] of SETTINGS) { const el = $('set-' + key); el.value = el.tagName === 'SELECT' ? el.options[0].value : ''; fileSettings[key] = null; }
+    for (const [key] of SETTINGS) {
+      const el = $('set-' + key);
+      if (el.type === 'checkbox') el.checked = false;
+      else el.value = el.tagName === 'SELECT' ? el.options[0].value : '';
+      fileSettings[key] = null;
+    }
     preview();
   });
   $('files').addEventListener('change', async (e) => {
     const list = [];
     for (const f of e.target.files) list.push({ name: f.name, bytes: await f.arrayBuffer() });
+    // Cleared, so that choosing the same file again (changed on disk) reads it again.
+    e.target.value = '';
     if (list.length) setFiles(list);
   });
   document.addEventListener('dragover', (e) => e.preventDefault());
   document.addEventListener('drop', async (e) => {
     e.preventDefault();
+    if (planning) {
+      status('A plan is running: Stop it before opening other files.');
+      return;
+    }
     const list = [];
     for (const f of e.dataTransfer.files) list.push({ name: f.name, bytes: await f.arrayBuffer() });
     if (list.length) setFiles(list);
   });
   $('sample').addEventListener('click', () => setFiles([sampleFile()]));
   $('random').addEventListener('click', () => {
-    const n = Math.max(2, Math.min(200000, parseInt($('random-holes').value, 10) || 500));
-    setFiles([randomFile(n)]);
+    const asked = parseInt($('random-holes').value, 10);
+    if (!(asked >= 2 && asked <= 200000)) {
+      showError('Random holes: from 2 to 200 000 (got ' + ($('random-holes').value || 'nothing') + ')');
+      return;
+    }
+    setFiles([randomFile(asked)]);
   });
   $('plan').addEventListener('click', plan);
   $('stop').addEventListener('click', () => { worker.postMessage({ cmd: 'stop' }); status('Stopping\u2026'); });
+  // What is saved is the job the results show, named as it was at Plan.
   const dialect = () => result.dialect || 'haas';
-  $('save-program').addEventListener('click', () => download(jobName() + '.' + (EXT[dialect()] || 'nc'), result.files.program, 'text/plain'));
-  $('save-report').addEventListener('click', () => download(jobName() + '.json', result.files.report, 'application/json'));
-  $('save-setup').addEventListener('click', () => download(jobName() + '-setup.html', result.files.setup_sheet, 'text/html'));
-  $('save-picture').addEventListener('click', () => download(jobName() + '-route.svg', result.files.route_svg, 'image/svg+xml'));
-  $('save-excellon').addEventListener('click', () => download(jobName() + '-optimized.drl', result.files.excellon, 'text/plain'));
+  $('save-program').addEventListener('click', () => download(planned.name + '.' + (EXT[dialect()] || 'nc'), result.files.program, 'text/plain'));
+  $('save-report').addEventListener('click', () => download(planned.name + '.json', result.files.report, 'application/json'));
+  $('save-setup').addEventListener('click', () => download(planned.name + '-setup.html', result.files.setup_sheet, 'text/html'));
+  $('save-picture').addEventListener('click', () => download(planned.name + '-route.svg', result.files.route_svg, 'image/svg+xml'));
+  $('save-excellon').addEventListener('click', () => download(planned.name + '-optimized.drl', result.files.excellon, 'text/plain'));
   startWorker();
 })();

@@ -5,6 +5,7 @@
 // messages (Stop) before the next, since a worker inside C++ sees none.
 #include <emscripten/emscripten.h>
 
+#include <cmath>
 #include <cstdint>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -71,6 +72,8 @@ job::PlanSettings settings_of(const json& j) {
   text("local_search", s.solver.local_search);
   if (s.solver.local_search.empty()) s.solver.local_search = "auto";
   text("program_name", s.program_name);
+  text("dxf_units", s.input.dxf_units);
+  s.input.round_contours = j.contains("round_contours") && j["round_contours"].is_string() && j["round_contours"] == "on";
   if (j.contains("processes") && j["processes"].is_string() && !j["processes"].get<std::string>().empty()) {
     std::string name = "processes.json";
     text("processes_name", name);
@@ -81,10 +84,22 @@ job::PlanSettings settings_of(const json& j) {
   s.bench.end_mill_mm = number("end_mill");
   s.probe_plate_mm = number("probe_plate");
   s.bench.alignment_pins_mm = number("alignment_pins");
-  if (auto v = number("time_limit")) s.solver.time_limit_s = *v;
-  if (auto v = number("iterations")) s.solver.iterations = static_cast<int>(*v);
-  if (auto v = number("seed")) s.solver.seed = static_cast<std::uint64_t>(*v);
-  if (auto v = number("ants")) s.solver.ants = static_cast<int>(*v);
+  // What the command line refuses, the page says by its control's name (issue 84: Seed -3 and Iterations 0 went through).
+  auto whole = [&](const char* key, const char* control, double least) -> std::optional<double> {
+    const std::optional<double> v = number(key);
+    if (v && !(*v >= least && *v <= 2e9 && *v == std::floor(*v))) {
+      throw formats::InputError(std::string(control) + ": a whole number from " + std::to_string(static_cast<int>(least)) +
+                                " (empty: the default)");
+    }
+    return v;
+  };
+  if (auto v = number("time_limit")) {
+    if (!(*v > 0)) throw formats::InputError("Time limit: a number of seconds above 0 (empty: none)");
+    s.solver.time_limit_s = *v;
+  }
+  if (auto v = whole("iterations", "Iterations", 1)) s.solver.iterations = static_cast<int>(*v);
+  if (auto v = whole("seed", "Seed", 0)) s.solver.seed = static_cast<std::uint64_t>(*v);
+  if (auto v = whole("ants", "Ants", 1)) s.solver.ants = static_cast<int>(*v);
   if (auto v = number("alpha")) s.solver.alpha = *v;
   s.solver.beta = number("beta");
   s.solver.threads = 1;  // no threads in a file:// page (no cross-origin isolation)
@@ -121,8 +136,26 @@ json holes_of(const job::Result& r) {
                      {"operation", gcode::to_string(g.tool.operation)},
                      {"holes", g.input_order}});
   }
-  json inputs = json::array();
   const bool program = r.inputs.holes.program != nullptr;
+  if (program && r.plan.groups.empty()) {
+    // Another CAM's program before it is reordered (issue 84): its tool runs
+    // are the tools, the holes in program order as program_holes lists them.
+    std::size_t next = 0;
+    for (const gcode::ToolRun& run : r.inputs.holes.program->runs) {
+      std::vector<std::size_t> at(run.holes.size());
+      for (std::size_t& k : at) k = next++;
+      gcode::Tool t;
+      t.number = run.tool;
+      t.diameter_mm = run.diameter_mm.value_or(0.0);
+      tools.push_back({{"number", run.tool},
+                       {"name", run.diameter_mm ? gcode::tool_name(t) : "T" + std::to_string(run.tool)},
+                       {"diameter_mm", t.diameter_mm},
+                       {"end_mill", false},
+                       {"operation", "drill"},
+                       {"holes", at}});
+    }
+  }
+  json inputs = json::array();
   for (std::size_t k = 0; k < r.inputs.sources.size(); ++k) {
     const formats::LoadedHoles& part = program ? r.inputs.holes : r.inputs.parts[k];
     json notes = json::array();
@@ -147,7 +180,8 @@ json holes_of(const job::Result& r) {
                       {"round_contours", part.round_contours},
                       {"features", formats::features_summary(part.features)}});
   }
-  const planning::Extent& e = r.placement.extent;
+  // A program's holes stay where it has them: their extent as they are.
+  const planning::Extent e = program ? planning::extent_of(holes) : r.placement.extent;
   return {{"holes", xyd},
           {"tools", tools},
           {"inputs", inputs},
@@ -237,6 +271,7 @@ EMSCRIPTEN_KEEPALIVE const char* aco_finish() {
   out["nearest_neighbor"] = stats_of(r.plan.nearest_neighbor);
   out["optimized"] = stats_of(r.plan.optimized);
   out["dialect"] = gcode::to_string(r.dialect);
+  out["kept_style"] = r.program_input && r.program_input->style == "keep";  // a program input written in its own style
   return answer(out);
 }
 
