@@ -262,6 +262,31 @@ TEST(solver_test, a_run_in_slices_is_the_run_in_one) {
   }
 }
 
+// Issue 84: slices by time end inside the first route's local search too (a
+// page's worker needs control back every 0.1 s, and that search takes seconds
+// on 10^5 holes), and resumed it makes the same moves: sliced every 2 ms, the
+// run is the one solve() makes. The route under way is whole to draw.
+TEST(solver_test, time_slices_end_inside_the_first_search_and_change_nothing) {
+  const aco::Problem p = random_problem(12000, 23, aco::Shape::OpenPath);
+  aco::Params params = quick(aco::Algorithm::FocusedAcs, aco::LocalSearch::ThreeOpt);
+  params.iterations = 6;
+  const aco::Solution whole = aco::solve(p, params);
+  aco::ColonyRun run(p, params);
+  int slices_in_search = 0, slices = 0;
+  while (!run.advance(0, 0.002)) {
+    ++slices;
+    if (run.iterations() == 0) {
+      ++slices_in_search;
+      ASSERT_TRUE(aco::is_permutation_of(p, run.best_order()));
+    }
+  }
+  EXPECT_GT(slices_in_search, 1) << "the first search spans slices";
+  const aco::Solution sliced = run.finish();
+  EXPECT_EQ(sliced.order, whole.order);
+  EXPECT_EQ(sliced.length, whole.length);
+  EXPECT_EQ(sliced.iterations, whole.iterations);
+}
+
 TEST(solver_test, the_stop_flag_ends_the_run_with_its_best_route) {
   const aco::Problem p = random_problem(500, 22, aco::Shape::OpenPath);
   aco::Params params = quick(aco::Algorithm::FocusedAcs, aco::LocalSearch::ThreeOpt);
@@ -277,7 +302,7 @@ TEST(solver_test, the_stop_flag_ends_the_run_with_its_best_route) {
   EXPECT_EQ(s.iterations, 7);
   ASSERT_TRUE(aco::is_permutation_of(p, s.order));
   EXPECT_NEAR(s.length, aco::route_length(p, s.order), 1e-9 * s.length);
-  // Set before the run: the first route (nearest neighbour, improved), no iteration.
+  // Set before the run: the first route (nearest neighbour; the stop ends its search too), no iteration.
   const aco::Solution none = aco::solve(p, params);
   EXPECT_EQ(none.iterations, 0);
   EXPECT_EQ(none.stop_reason, "stopped");

@@ -260,13 +260,19 @@ class Colony {
   // between two iterations, with the next one's ants drawn, so any slicing
   // runs the same iterations as one advance(). finish() gives the best
   // route; before the run has ended it ends it there ("stopped").
+  // start() makes the nearest-neighbour route; its local search, which on
+  // 10^5 holes takes seconds, then runs in the slices' time (first_search),
+  // before the first round, so that a slice ends on time even then.
   void start();
+  // Runs the first route's search until it is done (true; the rounds are
+  // then set up) or the clock reaches `until_s` (false; 0: no bound).
+  bool first_search(double until_s);
   bool advance(Team& team, int max_iterations, double until_s);
   // A stop asked, or the time limit reached: what ends the run, and the searches in it.
   bool must_end() const;
   Solution finish();
   int completed() const { return run_.completed; }
-  Order best_order() const { return to_order(run_.best_route); }
+  Order best_order() const { return to_order(first_search_ ? first_search_->route() : run_.best_route); }
 
  private:
   // What run() keeps from round to round (rounds.cpp sets it up).
@@ -425,6 +431,11 @@ class Colony {
   double ref_len_ = 0.0;
   int ref_stall_ = 0;  // iterations since the reference last improved
   std::unique_ptr<LocalSearcher> kick_searcher_;
+  // The first route's search while it runs (start() to first_search()), and
+  // the nearest-neighbour route's length, which sets the first trail.
+  std::unique_ptr<LocalSearcher> first_search_;
+  double c_nn_ = 1.0;
+  void start_rounds();
 };
 
 }  // namespace aco::detail

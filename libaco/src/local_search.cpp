@@ -272,30 +272,60 @@ void LocalSearcher::search_whole_route_from(const HoleIndex* first, const HoleIn
 }
 
 void LocalSearcher::improve(std::vector<HoleIndex>& route, Moves moves) {
+  begin(route, moves);
+  search(nullptr);
+  end(route);
+}
+
+void LocalSearcher::begin(std::vector<HoleIndex>& route, Moves moves) {
   m_ = route.size();
   gain_ = 0.0;
   forgot_ = true;  // searched() tells of improve_from alone: windows here clear the queue
   interrupted_ = false;
+  moves_ = moves;
+  loaded_ = false;
   if (m_ < 4 || cand_.k == 0) return;
   load(route);
+  loaded_ = true;
   std::fill(queued_.begin(), queued_.end(), 0);
   if (m_ <= kWindow) {
-    search_whole_route_from(route_.data(), route_.data() + m_, moves);
+    windowed_ = false;
+    lo_ = 0;
+    hi_ = m_;
+    queue_.clear();
+    head_ = 0;
+    for (std::size_t p = 0; p < m_; ++p) push(route_[p]);
   } else {
     // Windows overlap by half, so a move across one window's border lies
     // inside the next; each is searched until no move in it gains.
     windowed_ = true;
-    for (std::size_t lo = 0; lo + 2 < m_; lo += kWindow / 2) {
-      lo_ = lo;
-      hi_ = std::min(m_ - 1, lo + kWindow);
-      queue_.clear();
-      head_ = 0;
-      for (std::size_t p = lo_; p <= hi_; ++p) push(route_[p]);
-      run_queue(moves);
-      if (hi_ == m_ - 1 || interrupted_) break;
-    }
+    open_window(0);
   }
+}
+
+void LocalSearcher::open_window(std::size_t lo) {
+  lo_ = lo;
+  hi_ = std::min(m_ - 1, lo + kWindow);
+  queue_.clear();
+  head_ = 0;
+  for (std::size_t p = lo_; p <= hi_; ++p) push(route_[p]);
+}
+
+bool LocalSearcher::search(const std::function<bool()>& pause) {
+  if (!loaded_) return true;
+  const std::function<bool()>* asked = pause ? &pause : nullptr;
+  while (true) {
+    if (!run_queue(moves_, asked)) return false;
+    if (interrupted_ || !windowed_ || hi_ == m_ - 1) return true;
+    if (!(lo_ + kWindow / 2 + 2 < m_)) return true;
+    open_window(lo_ + kWindow / 2);
+  }
+}
+
+void LocalSearcher::end(std::vector<HoleIndex>& route) {
+  if (!loaded_) return;
   unload(route);
+  loaded_ = false;
 }
 
 void LocalSearcher::unload(std::vector<HoleIndex>& route) { route.swap(route_); }
@@ -304,6 +334,7 @@ void LocalSearcher::improve_from(std::vector<HoleIndex>& route, Moves moves, con
   m_ = route.size();
   gain_ = 0.0;
   forgot_ = true;  // searched() says nothing of a route it did not search
+  interrupted_ = false;
   if (m_ < 4 || cand_.k == 0 || seeds.empty()) return;
   load(route);
   forgot_ = false;
@@ -313,15 +344,18 @@ void LocalSearcher::improve_from(std::vector<HoleIndex>& route, Moves moves, con
   unload(route);
 }
 
-void LocalSearcher::run_queue(Moves moves) {
+bool LocalSearcher::run_queue(Moves moves, const std::function<bool()>* pause) {
   while (head_ < queue_.size()) {
-    if (due_ && (++since_asked_ & 63) == 0 && due_()) {
-      // Stopped: the holes still queued are unqueued, unsearched.
-      for (std::size_t k = head_; k < queue_.size(); ++k) queued_[queue_[k]] = 0;
-      head_ = queue_.size();
-      interrupted_ = true;
-      forgot_ = true;
-      return;
+    if ((due_ || pause != nullptr) && (++since_asked_ & 63) == 0) {
+      if (due_ && due_()) {
+        // Stopped: the holes still queued are unqueued, unsearched.
+        for (std::size_t k = head_; k < queue_.size(); ++k) queued_[queue_[k]] = 0;
+        head_ = queue_.size();
+        interrupted_ = true;
+        forgot_ = true;
+        return true;
+      }
+      if (pause != nullptr && (*pause)()) return false;  // the queue as it is, for the next slice
     }
     const HoleIndex a = queue_[head_++];
     queued_[a] = 0;
@@ -341,7 +375,7 @@ void LocalSearcher::run_queue(Moves moves) {
         queue_.clear();  // a search whose moves lengthen the route may never end
         head_ = 0;
         forgot_ = true;
-        return;
+        return true;
       }
     }
     if (moved) push(a);
@@ -352,6 +386,7 @@ void LocalSearcher::run_queue(Moves moves) {
       forgot_ = true;
     }
   }
+  return true;
 }
 
 }  // namespace aco::detail

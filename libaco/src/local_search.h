@@ -63,6 +63,16 @@ class alignas(64) LocalSearcher {
   // could end), never for a slice's end, which must not change the result.
   void interrupt_when(std::function<bool()> due) { due_ = std::move(due); }
   bool interrupted() const { return interrupted_; }
+  // improve() in slices, for a front end that must have control back often
+  // (issue 84: the page's worker every 0.1 s): begin() takes the route,
+  // search() searches until no move gains (true) or until `pause()` says
+  // (false; asked as interrupt_when's `due` is), end() gives the route back.
+  // Paused and resumed it makes the moves improve() makes, in that order.
+  void begin(std::vector<HoleIndex>& route, Moves moves);
+  bool search(const std::function<bool()>& pause);
+  void end(std::vector<HoleIndex>& route);
+  // The route under a search in slices, between begin() and end().
+  const std::vector<HoleIndex>& route() const { return route_; }
   // The same, looking only where something changed: the queue starts with
   // `seeds` (the ends of an ant's new edges) and grows only where moves are
   // made, so the search costs what the ant changed, plus O(n) to load the route.
@@ -131,7 +141,9 @@ class alignas(64) LocalSearcher {
   void load(std::vector<HoleIndex>& route);    // route_ (taken from `route`) and pos_ (m_ set)
   void unload(std::vector<HoleIndex>& route);  // gives route_ back to `route`
   void search_whole_route_from(const HoleIndex* first, const HoleIndex* last, Moves moves);
-  void run_queue(Moves moves);
+  // Searches the queue until it is empty (true) or `pause` says (false).
+  bool run_queue(Moves moves, const std::function<bool()>* pause = nullptr);
+  void open_window(std::size_t lo);
   bool in_window(std::size_t position) const { return position >= lo_ && position <= hi_; }
   bool try_two_opt(HoleIndex a);
   bool try_or_opt(HoleIndex a);
@@ -264,6 +276,9 @@ class alignas(64) LocalSearcher {
   std::function<bool()> due_;
   bool interrupted_ = false;
   std::uint32_t since_asked_ = 0;
+  // A search in slices (begin() .. end()): its moves, and whether a route is taken.
+  Moves moves_ = Moves::TwoOpt;
+  bool loaded_ = false;
 };
 
 }  // namespace aco::detail

@@ -19,19 +19,36 @@ void Colony::start() {
   // Nearest neighbour, improved when local search is on, starts the best-so-far
   // and gives C_nn for the initial trail.
   s.best_route = route_from_order(space_, nearest_neighbor_order(space_, cand_));
-  const double c_nn = std::max(space_.route_cost(s.best_route), 1e-9);
+  c_nn_ = std::max(space_.route_cost(s.best_route), 1e-9);
   s.use_ls = p_.local_search != LocalSearch::None;
   s.moves = p_.local_search == LocalSearch::FiveOpt       ? Moves::FiveOpt
             : p_.local_search == LocalSearch::ThreeOpt    ? Moves::ThreeOpt
             : p_.local_search == LocalSearch::TwoOptOrOpt ? Moves::OrOpt
                                                           : Moves::TwoOpt;
-  if (s.use_ls) {
-    LocalSearcher ls(space_, cand_);
-    // A stop or the time limit ends this search too: at 10^5 holes and more
-    // it is the run's longest step (issue 84).
-    ls.interrupt_when([this] { return must_end(); });
-    ls.improve(s.best_route, s.moves);
+  if (!s.use_ls) {
+    start_rounds();
+    return;
   }
+  first_search_ = std::make_unique<LocalSearcher>(space_, cand_);
+  // A stop or the time limit ends this search too: at 10^5 holes and more
+  // it is the run's longest step (issue 84).
+  first_search_->interrupt_when([this] { return must_end(); });
+  first_search_->begin(s.best_route, s.moves);
+}
+
+bool Colony::first_search(double until_s) {
+  if (!first_search_) return true;
+  const std::function<bool()> slice_over = [&] { return until_s > 0.0 && clock_.seconds() >= until_s; };
+  if (!first_search_->search(slice_over)) return false;
+  first_search_->end(run_.best_route);
+  first_search_.reset();
+  start_rounds();
+  return true;
+}
+
+void Colony::start_rounds() {
+  RunState& s = run_;
+  const double c_nn = c_nn_;
   s.best_len = space_.route_cost(s.best_route);
   s.sol.trace.push_back({0, clock_.seconds(), s.best_len});
 
@@ -96,6 +113,8 @@ bool Colony::advance(Team& team, int max_iterations, double until_s) {
     s.ended = true;
   }
   if (s.ended) return true;
+  if (!first_search(until_s)) return false;  // the slice ended in the first route's search
+  if (s.ended) return true;                  // (no iteration to run)
   s.slice_last_it = max_iterations > 0 ? s.it + max_iterations - 1 : 0;
   s.slice_until_s = until_s;
   team_->rounds(p_.ants, s.sol.thread_busy_s, [this](int slot, int worker) { ant(slot, worker); },
@@ -105,6 +124,12 @@ bool Colony::advance(Team& team, int max_iterations, double until_s) {
 
 Solution Colony::finish() {
   RunState& s = run_;
+  if (first_search_) {
+    // Stopped in the first route's search: that route, as far as it got.
+    first_search_->end(s.best_route);
+    first_search_.reset();
+    s.best_len = space_.route_cost(s.best_route);
+  }
   if (!s.ended) s.sol.stop_reason = "stopped";
   s.ended = true;
   s.sol.iterations = s.completed;

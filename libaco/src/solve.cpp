@@ -195,6 +195,8 @@ bool ColonyRun::advance(int max_iterations, double max_seconds) {
 
 bool ColonyRun::ended() const { return state_->ended; }
 
+bool ColonyRun::begun() const { return state_->colony != nullptr; }
+
 int ColonyRun::iterations() const {
   const State& s = *state_;
   return s.colony ? s.colony->completed() : s.solution.iterations;
@@ -218,6 +220,7 @@ Solution ColonyRun::finish() {
     detail::Team::run(s.params.threads, [&](detail::Team& team) {
       s.colony = std::make_unique<detail::Colony>(s.problem, s.params, team, *s.started);
       s.colony->start();
+      s.colony->first_search(0.0);
     });
   }
   if (s.colony != nullptr) {

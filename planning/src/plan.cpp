@@ -227,7 +227,17 @@ void GroupRouter::end_group() {
   if (c.problem.points.empty()) {
     group.optimized = group.nearest_neighbor = c.prefix;
   } else {
-    group.solution = c.run.finish();
+    if (stopped_ && !c.run.begun() && !c.run.ended()) {
+      // Stopped before this tool began: its nearest-neighbour route, without
+      // the colony's set-up (candidate lists and a first search: seconds at
+      // 10^5 holes, which a Stop must not wait for; issue 84).
+      group.solution.order = aco::nearest_neighbor(c.problem);
+      group.solution.length = aco::route_length(c.problem, group.solution.order);
+      group.solution.algorithm = options_.solver.algorithm;
+      group.solution.stop_reason = "stopped";
+    } else {
+      group.solution = c.run.finish();
+    }
     group.optimized = with_prefix(c.units.expand(group.solution.order));
     aco::Problem pnn = c.problem;
     if (c.prefix.empty()) pnn.start = at_nn_;

@@ -42,6 +42,8 @@ class ColonyRun {
   // no bound) or `max_seconds` more (0: none) have passed (false).
   bool advance(int max_iterations = 0, double max_seconds = 0.0);
   bool ended() const;
+  // Whether advance() has set the colony up (its candidate lists and first route).
+  bool begun() const;
   int iterations() const;  // run so far
   // The best route so far (empty before the first advance()), to draw while it runs.
   Order best_order() const;
