@@ -253,6 +253,40 @@ async function fresh(context) {
 
   check(!/--/.test(await page.evaluate(() => document.body.innerText)), 'nothing the page says names a command-line option ("--")');
 
+  // 9b. Stop at size (issue 84): 200 000 random holes, Stop pressed 3 s into
+  // the plan (in the colony's set-up): the routing ends at once and the
+  // outputs follow; the page's thread runs no long task while it plans (a
+  // long-task observer; bounds with a margin for a loaded CI machine, the
+  // figures printed; scripts/web --bench measures them by size).
+  await page.evaluate(() => {
+    window.longest = 0;
+    new PerformanceObserver((l) => { for (const e of l.getEntries()) window.longest = Math.max(window.longest, e.duration); })
+      .observe({ type: 'longtask' });
+  });
+  await page.getByRole('button', { name: 'Reset settings' }).click();
+  await page.getByLabel('Random holes', { exact: true }).fill('200000');
+  await page.getByRole('button', { name: 'Random plate', exact: true }).click();
+  await page.waitForFunction(() => !document.getElementById('plan').disabled, null, { timeout: 120000 });
+  await page.evaluate(() => { window.longest = 0; });
+  await page.getByRole('button', { name: 'Plan', exact: true }).click();
+  await page.waitForTimeout(3000);
+  const longestPlanning = await page.evaluate(() => window.longest);
+  const pressed = Date.now();
+  await page.getByRole('button', { name: 'Stop', exact: true }).click();
+  await page.waitForFunction(() => document.body.dataset.routing === 'stopped' || !document.getElementById('save-program').disabled, null,
+                             { timeout: 120000 });
+  const stopS = (Date.now() - pressed) / 1000;
+  await page.waitForFunction(() => !document.getElementById('save-program').disabled, null, { timeout: 300000 });
+  const outputsS = (Date.now() - pressed) / 1000;
+  console.log('      200 000 holes: Stop to the routing ended ' + stopS.toFixed(2) + ' s, to the outputs ' + outputsS.toFixed(2) +
+              ' s; the longest task of the page\'s thread while planning ' + Math.round(longestPlanning) + ' ms');
+  check(stopS < 1.0, 'Stop ends the routing of 200 000 holes within 1 s: ' + stopS.toFixed(2) + ' s');
+  check(longestPlanning < 250, 'no long task on the page\'s thread while 200 000 holes plan: ' + Math.round(longestPlanning) + ' ms');
+  const [big] = await Promise.all([page.waitForEvent('download'), page.getByRole('button', { name: 'Save program' }).click()]);
+  const bigPath = path.join(work, 'big.nc');
+  await big.saveAs(bigPath);
+  check(/^holes 200000$/m.test(execFileSync(acodrill, ['verify', bigPath]).toString()), 'the stopped program drills all 200 000 holes');
+
   // 10. A layout for the screen it is on (issue 84): after a file is opened,
   // Plan and the progress are in the viewport on a laptop's 1366x768 and on a
   // 390x844 phone, and stay there while a plan runs and while the settings

@@ -126,7 +126,7 @@
     const url = URL.createObjectURL(new Blob([src], { type: 'text/javascript' }));
     worker = new Worker(url);
     workerReady = false;
-    worker.onmessage = (e) => onWorker(e.data);
+    worker.onmessage = (e) => { const t0 = performance.now(); onWorker(e.data); const dt = performance.now() - t0; if (dt > 30) console.log('SLOW ' + e.data.cmd + ' ' + dt.toFixed(0)); };
     worker.onerror = (e) => onWorker({ cmd: 'crashed', message: e.message || 'the worker stopped' });
   }
   function send(msg, transfer) {
@@ -223,15 +223,22 @@
       if (!planning) $('plan').disabled = !planReady();
       drawHoles();
       describeHoles();
-      status(msg.planning ? 'Planning\u2026' : 'Read ' + (view.holes.length / 3 - operationsOf(view)) + ' holes.');
+      status(msg.planning ? 'Planning\u2026' + (liveRoutes() ? '' : ' (the routes are drawn when the plan ends)') : 'Read ' + (view.holes.length / 3 - operationsOf(view)) + ' holes.');
       return;
     }
     if (msg.cmd === 'progress' && msg.id === planId) {
       for (const p of msg.progress) addProgress(p);
-      if (msg.routes) {
+      if (msg.routes && liveRoutes()) {
         routes = msg.routes;
         scheduleDraw();
       }
+      return;
+    }
+    if (msg.cmd === 'stopping' && msg.id === planId) {
+      // Routing ended by Stop: the plan is over; its outputs follow.
+      $('stop').disabled = true;
+      document.body.dataset.routing = 'stopped';
+      status('Stopped: writing the program from the best routes so far\u2026');
       return;
     }
     if (msg.cmd === 'finished' && msg.id === planId) {
@@ -289,6 +296,7 @@
     enableSaves(false);
     resetChart();
     running(true);
+    document.body.dataset.routing = 'yes';
     started = performance.now();
     const s = settings();
     s.program_name = jobName() + '.' + (EXT[s.dialect] || 'nc');
@@ -298,7 +306,7 @@
     planned = { name: jobName(), files: files.map((f) => f.name).join(', '),
                 machine: [...machineSelect.options].find((o) => o.value === machine).text.replace(/: (.*)$/, ' ($1)') };
     const copies = files.map((f) => ({ name: f.name, bytes: f.bytes.slice(0) }));
-    planId = send({ cmd: 'plan', files: copies, settings: s }, copies.map((c) => c.bytes));
+    planId = send({ cmd: 'plan', files: copies, settings: s, liveRoutes: liveRoutes() }, copies.map((c) => c.bytes));
     $('progress-text').textContent = 'Reading the files\u2026';
   }
 
@@ -324,7 +332,7 @@
       const series = [{ label: 'seconds' }];
       for (let t = 0; t < chartTools; t++) {
         // A marker at each point: a tool routed within one slice is one point, seen.
-        series.push({ label: 'tool ' + (t + 1), stroke: COLOURS[t % COLOURS.length], spanGaps: false, points: { show: true, size: 5 } });
+        series.push({ label: 'tool ' + (t + 1), stroke: COLOURS[t % COLOURS.length], spanGaps: false, points: { size: 5 } });  // uPlot's own rule: markers where the points are few (one alone is seen)
       }
       const width = Math.max(260, Math.min(860, $('chart').clientWidth || 600));
       const narrow = window.matchMedia('(max-width: 900px)').matches;  // in the bar at the bottom of a phone's screen
@@ -336,6 +344,11 @@
   }
 
   // --- drawing -------------------------------------------------------------
+  // The routes are drawn as they improve up to this many holes; above it,
+  // once the plan ends: drawing 20 000 holes' routes took the page's thread
+  // 150-250 ms a time (issue 84: no task over 100 ms while it plans).
+  const LIVE_ROUTES_UP_TO = 10000;
+  function liveRoutes() { return view !== null && view.holes.length / 3 <= LIVE_ROUTES_UP_TO; }
   let drawQueued = false;
   function scheduleDraw() {
     if (drawQueued) return;
@@ -382,12 +395,20 @@
     // a ring, a countersink a dashed ring, a tap three quarters of a ring, a
     // spot a small cross.
     const opOf = (i) => (v.tools.length && v.tools[toolOf[i]].operation) || 'drill';
-    for (let i = 0; i < n; i++) {
-      if (opOf(i) !== 'drill') continue;
-      const r = Math.max(1, 0.5 * xyd[3 * i + 2] * f.k);
-      g.fillStyle = v.tools.length ? COLOURS[toolOf[i] % COLOURS.length] : '#333';
-      if (n > 20000 || r < 2) g.fillRect(f.X(xyd[3 * i]) - r, f.Y(xyd[3 * i + 1]) - r, 2 * r, 2 * r);
-      else { g.beginPath(); g.arc(f.X(xyd[3 * i]), f.Y(xyd[3 * i + 1]), r, 0, 2 * Math.PI); g.fill(); }
+    // A tool's holes in one colour, set once: a colour set a hole cost most
+    // of a 100 000-hole drawing, a main-thread task over 100 ms (issue 84).
+    const groups = v.tools.length ? v.tools.map((t, k) => ({ colour: COLOURS[k % COLOURS.length], holes: t.holes }))
+                                  : [{ colour: '#333', holes: Array.from({ length: n }, (_, i) => i) }];
+    for (const { colour, holes } of groups) {
+      const path = new Path2D();  // one fill a tool
+      for (const i of holes) {
+        if (opOf(i) !== 'drill') continue;
+        const r = Math.max(1, 0.5 * xyd[3 * i + 2] * f.k), x = f.X(xyd[3 * i]), y = f.Y(xyd[3 * i + 1]);
+        if (n > 20000 || r < 2) path.rect(x - r, y - r, 2 * r, 2 * r);
+        else { path.moveTo(x + r, y); path.arc(x, y, r, 0, 2 * Math.PI); }
+      }
+      g.fillStyle = colour;
+      g.fill(path);
     }
     g.lineWidth = 1.5;
     for (let i = 0; i < n; i++) {

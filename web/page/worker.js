@@ -6,6 +6,8 @@
 'use strict';
 let M = null;
 let stopAsked = false;
+let routesSent = 0;  // when routes were last sent (ms)
+let liveRoutes = true;  // the page draws the routes while it plans (small jobs)
 const ready = createAcodrill().then((m) => {
   M = m;
   postMessage({ cmd: 'ready' });
@@ -20,6 +22,24 @@ function cString(s) {
 
 function answer(pointer) {
   return JSON.parse(M.UTF8ToString(pointer));
+}
+
+// The large lists of an answer as typed arrays, whose buffers are handed to
+// the page rather than copied number by number: a plain array of 3 x 10^5
+// numbers took the page's thread a task of over 100 ms to receive (issue 84).
+function packed(out) {
+  const transfer = [];
+  const typed = (list, Type) => {
+    const a = Type.from(list);
+    transfer.push(a.buffer);
+    return a;
+  };
+  if (Array.isArray(out.holes)) out.holes = typed(out.holes, Float64Array);
+  for (const t of out.tools || []) t.holes = typed(t.holes, Int32Array);
+  for (const key of ['routes', 'input_routes']) {
+    if (Array.isArray(out[key])) out[key] = out[key].map((r) => typed(r, Int32Array));
+  }
+  return { out, transfer };
 }
 
 function open(files, settings) {
@@ -40,9 +60,19 @@ function open(files, settings) {
 
 function slice(id) {
   try {
-    if (stopAsked) return finish(id);
-    const out = answer(M._aco_advance(0, 0.1));
-    postMessage({ cmd: 'progress', id, progress: out.progress, routes: out.routes || null });
+    if (stopAsked) {
+      // The routing ends here, with the best routes so far: said before the
+      // outputs are written (seconds on 10^5 holes), so the page answers at once.
+      postMessage({ cmd: 'stopping', id });
+      return setTimeout(() => finish(id), 0);
+    }
+    const out = answer(M._aco_advance(0, 0.1, liveRoutes ? 1 : 0));
+    // Routes (10^5 numbers on a large job, copied to the page and drawn
+    // there) at most twice a second: each costs the page's thread a task.
+    const now = Date.now();
+    const routes = out.routes && liveRoutes && now - routesSent >= 500 ? packed({ routes: out.routes }) : null;
+    if (routes) routesSent = now;
+    postMessage({ cmd: 'progress', id, progress: out.progress, routes: routes ? routes.out.routes : null }, routes ? routes.transfer : []);
     if (out.done) return finish(id);
     setTimeout(() => slice(id), 0);
   } catch (e) {
@@ -51,7 +81,8 @@ function slice(id) {
 }
 
 function finish(id) {
-  postMessage({ cmd: 'finished', id, result: answer(M._aco_finish()) });
+  const { out, transfer } = packed(answer(M._aco_finish()));
+  postMessage({ cmd: 'finished', id, result: out }, transfer);
 }
 
 onmessage = async (e) => {
@@ -63,11 +94,14 @@ onmessage = async (e) => {
   await ready;
   try {
     if (msg.cmd === 'open') {
-      postMessage({ cmd: 'opened', id: msg.id, result: open(msg.files, msg.settings) });
+      const { out, transfer } = packed(open(msg.files, msg.settings));
+      postMessage({ cmd: 'opened', id: msg.id, result: out }, transfer);
     } else if (msg.cmd === 'plan') {
       stopAsked = false;
+      liveRoutes = msg.liveRoutes !== false;
       const opened = open(msg.files, msg.settings);
-      postMessage({ cmd: 'opened', id: msg.id, result: opened, planning: !opened.error });
+      const { out, transfer } = packed(opened);
+      postMessage({ cmd: 'opened', id: msg.id, result: out, planning: !opened.error }, transfer);
       if (!opened.error) slice(msg.id);
     }
   } catch (e) {

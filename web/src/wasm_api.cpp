@@ -234,8 +234,8 @@ EMSCRIPTEN_KEEPALIVE const char* aco_open(const char* settings_json) {
 }
 
 // Routes for `seconds` (or `iterations`): whether the job is done, the
-// progress heard, and (when it changed) each tool's route as it stands.
-EMSCRIPTEN_KEEPALIVE const char* aco_advance(int iterations, double seconds) {
+// progress heard, and (when it changed and `with_routes`) each tool's route as it stands.
+EMSCRIPTEN_KEEPALIVE const char* aco_advance(int iterations, double seconds, int with_routes) {
   Session& s = session();
   if (!s.job) return answer({{"done", true}});
   const bool done = s.job->advance(iterations, seconds);
@@ -243,7 +243,7 @@ EMSCRIPTEN_KEEPALIVE const char* aco_advance(int iterations, double seconds) {
   bool improved = false;
   for (const json& p : s.progress) improved = improved || p["improved"].get<bool>();
   s.progress = json::array();
-  if (improved && !done) out["routes"] = s.job->routes_so_far();
+  if (improved && !done && with_routes) out["routes"] = s.job->routes_so_far();
   return answer(out);
 }
 
