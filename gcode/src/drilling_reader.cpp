@@ -1010,6 +1010,12 @@ double HoleCycle::dwell_s() const {
   return total;
 }
 
+std::optional<double> HoleCycle::tap_pitch_mm(double spindle_rpm) const {
+  if (code == 331) return pitch_mm;
+  if ((code == 84 || code == 74) && spindle_rpm > 0) return feed_mm_min / spindle_rpm;
+  return std::nullopt;
+}
+
 bool HoleCycle::same_words(const HoleCycle& o) const {
   return code == o.code && z_mm == o.z_mm && r_mm == o.r_mm && q_mm == o.q_mm && p == o.p && feed_mm_min == o.feed_mm_min &&
          extra == o.extra && rigid == o.rigid && pitch_mm == o.pitch_mm;

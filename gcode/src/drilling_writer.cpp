@@ -93,7 +93,8 @@ class Writer {
       const ProgramHole& h = run.holes[i];
       const HoleCycle& c = h.cycle;
       const std::string xy = "X" + n(h.at.x) + " Y" + n(h.at.y);
-      if (c.code == 0) {
+      // A hole made of moves (expanded, G33.1): out of any cycle, over it at the travel plane.
+      auto over_the_hole = [&] {
         if (cycle_on) {
           line("G80");
           cycle_on = false;
@@ -102,6 +103,9 @@ class Writer {
         if (!z || *z < travel.z_mm - 1e-9) line(std::string(rapid()) + " Z" + n(travel.z_mm));
         if (!(i == 0 && at_first)) line(std::string(rapid()) + " " + xy);
         z = travel.z_mm;
+      };
+      if (c.code == 0) {
+        over_the_hole();
         for (const ZMove& m : c.moves) {
           switch (m.kind) {
             case ZMove::Rapid: line(std::string(rapid()) + " Z" + n(m.z_mm)); break;
@@ -124,17 +128,10 @@ class Writer {
       if (c.code == 331) {
         // G33.1 (LinuxCNC's rigid tap): from the travel plane over the hole,
         // down to where the input began it, and it comes back there.
-        if (cycle_on) {
-          line("G80");
-          cycle_on = false;
-          words = nullptr;
-        }
-        if (!z || *z < travel.z_mm - 1e-9) line(std::string(rapid()) + " Z" + n(travel.z_mm));
-        if (!(i == 0 && at_first)) line(std::string(rapid()) + " " + xy);
+        over_the_hole();
         if (std::fabs(travel.z_mm - c.r_mm) > 1e-9) line(std::string(rapid()) + " Z" + n(c.r_mm));
         line("G33.1 " + xy + " Z" + n(c.z_mm) + " K" + format_number(s_.inch ? c.pitch_mm / kMmPerInch : c.pitch_mm, s_.inch ? 6 : 4));
         if (std::fabs(travel.z_mm - c.r_mm) > 1e-9) line(std::string(rapid()) + " Z" + n(travel.z_mm));
-        z = travel.z_mm;
         continue;
       }
       if (!cycle_on && (!z || std::fabs(*z - travel.z_mm) > 1e-9)) {

@@ -15,12 +15,8 @@ Interpretation interpret(std::string_view program) {
     for (const ProgramHole& h : run.holes) {
       DrilledHole d{run.tool, h.at.x, h.at.y, h.cycle.bottom_mm(), h.line, h.milled_radius_mm.value_or(0.0), run.work_offset, {}, {}, {}};
       d.dwell_s = h.cycle.dwell_s();
-      if (h.cycle.code == 331) {
-        d.pitch_mm = h.cycle.pitch_mm;
-      } else if (h.cycle.code != 0) {
-        d.peck_mm = h.cycle.code == 83 || h.cycle.code == 73 ? h.cycle.q_mm : std::nullopt;
-        if ((h.cycle.code == 84 || h.cycle.code == 74) && run.spindle_rpm > 0) d.pitch_mm = h.cycle.feed_mm_min / run.spindle_rpm;
-      }
+      d.pitch_mm = h.cycle.tap_pitch_mm(run.spindle_rpm);
+      if (h.cycle.code == 83 || h.cycle.code == 73) d.peck_mm = h.cycle.q_mm;
       out.holes.push_back(d);
     }
   }

@@ -192,18 +192,15 @@ std::vector<std::string> check_same_holes(const gcode::Interpretation& run, cons
     double x, y, z;
     std::uint32_t line;
     int offset;  // the work offset: a second fixture's holes are others at the same X, Y (issue 83)
-    std::optional<double> peck, dwell_s;  // a canned cycle's Q and P (gcode::DrilledHole)
+    std::optional<double> peck, dwell_s;  // a canned cycle's Q; the dwell, canned or expanded (gcode::DrilledHole)
     std::optional<double> pitch;          // a tap's (issue 82): G33.1's K, G84's F over S
   };
   std::vector<Key> want, got;
   for (const gcode::ToolRun& r : expected.runs) {
     for (const gcode::ProgramHole& h : r.holes) {
       const std::optional<double> peck = h.cycle.code == 83 || h.cycle.code == 73 ? h.cycle.q_mm : std::nullopt;
-      const std::optional<double> dwell = h.cycle.dwell_s();
-      std::optional<double> pitch;
-      if (h.cycle.code == 331) pitch = h.cycle.pitch_mm;
-      else if ((h.cycle.code == 84 || h.cycle.code == 74) && r.spindle_rpm > 0) pitch = h.cycle.feed_mm_min / r.spindle_rpm;
-      want.push_back({r.tool, h.at.x, h.at.y, h.cycle.bottom_mm(), h.line, r.work_offset, peck, dwell, pitch});
+      want.push_back({r.tool, h.at.x, h.at.y, h.cycle.bottom_mm(), h.line, r.work_offset, peck, h.cycle.dwell_s(),
+                      h.cycle.tap_pitch_mm(r.spindle_rpm)});
     }
   }
   for (const auto& h : run.holes) {

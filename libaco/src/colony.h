@@ -260,9 +260,10 @@ class Colony {
   // between two iterations, with the next one's ants drawn, so any slicing
   // runs the same iterations as one advance(). finish() gives the best
   // route; before the run has ended it ends it there ("stopped").
-  // start() makes the nearest-neighbour route; its local search, which on
-  // 10^5 holes takes seconds, then runs in the slices' time (first_search),
-  // before the first round, so that a slice ends on time even then.
+  // Of start(): it makes the nearest-neighbour route; that route's local
+  // search, seconds on 10^5 holes, then runs in the slices' time
+  // (first_search), and the trail is set up after it, so that a slice ends
+  // on time even then.
   void start();
   // Runs the first route's search until it is done (true; the rounds are
   // then set up) or the clock reaches `until_s` (false; 0: no bound).

@@ -81,6 +81,9 @@ struct HoleCycle {
   // Seconds it dwells at the hole: a canned cycle's P (dwell_seconds), or the
   // G4s of expanded drilling made while the tool is in it, added up.
   double dwell_s() const;
+  // A tap's pitch (issue 82): G33.1's K, or G84's and G74's feed over the
+  // spindle's speed in force; nullopt for any other hole, or with no speed.
+  std::optional<double> tap_pitch_mm(double spindle_rpm) const;
   bool same_words(const HoleCycle& other) const;  // canned: the same cycle and words
 };
 
