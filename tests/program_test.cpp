@@ -203,6 +203,17 @@ TEST(program_test, a_rigid_tap_g33_1_is_a_tapped_hole_begun_where_z_is) {
     EXPECT_NEAR(hole->cycle.feed_mm_min, 1.27 * 400, 1e-9);
   }
   EXPECT_NEAR(h[1]->at.x, 25.4, 1e-9);
+  // GRBL cannot tap: the writer refuses the G33.1 by its own name and line.
+  gcode::DrillingWriteSettings grbl;
+  grbl.dialect = gcode::Dialect::Grbl;
+  std::ostringstream ignored;
+  try {
+    gcode::write_drilling(ignored, p, grbl);
+    ADD_FAILURE() << "G33.1 written for GRBL";
+  } catch (const gcode::ProgramError& e) {
+    EXPECT_EQ(e.line(), 6u);
+    EXPECT_THAT(e.what(), ::testing::HasSubstr("G33.1 (tapping) cannot be written as moves"));
+  }
   for (const auto& [text, says] : std::vector<std::pair<std::string, std::string>>{
            {"G21\nS400 M3\nG0 X0 Y0 Z2\nG33.1 X0 Y0 Z-5\n", "G33.1 without K"},
            {"G21\nS400 M3\nG0 X0 Y0 Z2\nG33.1 X0 Y0 K1\n", "G33.1 without Z"},

@@ -917,8 +917,10 @@ class Reader {
       out_.notes.push_back({lineno_, "G" + std::to_string(cycle_.code) + " without P (its dwell) and none in force: the control dwells 0 s; written as P0"});
       cycle_.p = "0";
     }
-    if ((cycle_.code == 83 || cycle_.code == 73) && !cycle_.q_mm && have_r_ && have_z_ && cycle_.z_mm < cycle_.r_mm &&
-        cycle_.extra.find('I') == std::string::npos) {
+    if (!have_r_) throw ProgramError(lineno_, "canned cycle without an R plane");
+    if (!have_z_) throw ProgramError(lineno_, "canned cycle without a depth (Z)");
+    if (cycle_.z_mm >= cycle_.r_mm) throw ProgramError(lineno_, "canned cycle depth Z is not below R");
+    if ((cycle_.code == 83 || cycle_.code == 73) && !cycle_.q_mm && cycle_.extra.find('I') == std::string::npos) {
       // A peck cycle without its peck (and no HAAS I J K pecks): LinuxCNC
       // refuses the line, other controls differ. Said once, and written as
       // what it can only mean, one stroke to the depth: Q the whole of R to Z.
@@ -926,9 +928,6 @@ class Reader {
       out_.notes.push_back({lineno_, "G" + std::to_string(cycle_.code) + " without Q (its peck) and none in force: LinuxCNC refuses it and other controls differ; drilled in one stroke, written as Q" +
                                          format_number(*cycle_.q_mm / scale(), inch_ ? 4 : 3)});
     }
-    if (!have_r_) throw ProgramError(lineno_, "canned cycle without an R plane");
-    if (!have_z_) throw ProgramError(lineno_, "canned cycle without a depth (Z)");
-    if (cycle_.z_mm >= cycle_.r_mm) throw ProgramError(lineno_, "canned cycle depth Z is not below R");
     cycle_.feed_mm_min = feed_;
     cycle_.retract_initial = retract_initial_;
     cycle_.rigid = rigid_ && (cycle_.code == 84 || cycle_.code == 74);
@@ -972,10 +971,10 @@ class Reader {
   OpenHole hole_;
   HoleCycle cycle_;
   bool cycle_started_ = false, have_r_ = false, have_z_ = false;
-  bool cycle_words_cancelled_ = true;
+  bool cycle_words_cancelled_ = true;    // by G80 or another cycle: a cycle's Q, P, I, J, K start afresh
   bool comment_change_pending_ = false;  // a "Begin toolchange" comment whose tool is not named yet
   int comment_tools_ = 0;                // the highest tool a comment named or numbered
-  std::map<std::string, int> controller_tools_;  // "TC:3.5MMDRILL" -> the tool numbered for it  // by G80 or another cycle: a cycle's Q, P, I, J, K start afresh
+  std::map<std::string, int> controller_tools_;  // "TC:3.5MMDRILL" -> the tool numbered for it
   std::optional<double> initial_z_;
   double feed_ = 0.0, rpm_ = 0.0;
   int spindle_ = 0, selected_tool_ = 0, work_offset_ = 54, length_offset_ = 0, coolant_ = 0;

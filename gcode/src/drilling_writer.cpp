@@ -469,11 +469,11 @@ void write_drilling(std::ostream& out, const DrillingProgram& program, const Dri
     write_keep_style(out, program, settings);
     return;
   }
-  // G33.1 is LinuxCNC's: for another control a rigid tap is its G84 at the
-  // same pitch (F = K x S; Fanuc's with M29), and a control without canned
-  // cycles cannot tap (expand_cycle refuses it).
+  // G33.1 is LinuxCNC's: for another control with canned cycles a rigid tap
+  // is its G84 at the same pitch (F = K x S; Fanuc's with M29); a control
+  // without them cannot tap (expand_cycle refuses the G33.1, naming its line).
   const auto rigid_tap = [](const ProgramHole& h) { return h.cycle.code == 331; };
-  const bool convert = settings.dialect != Dialect::LinuxCnc &&
+  const bool convert = settings.dialect != Dialect::LinuxCnc && has_canned_cycles(settings.dialect) &&
                        std::any_of(program.runs.begin(), program.runs.end(), [&](const ToolRun& r) {
                          return std::any_of(r.holes.begin(), r.holes.end(), rigid_tap);
                        });

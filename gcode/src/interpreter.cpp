@@ -6,19 +6,21 @@
 
 namespace gcode {
 
+DrilledHole drilled_hole(const ToolRun& run, const ProgramHole& h) {
+  DrilledHole d{run.tool, h.at.x, h.at.y, h.cycle.bottom_mm(), h.line, h.milled_radius_mm.value_or(0.0), run.work_offset, {}, {}, {}};
+  d.dwell_s = h.cycle.dwell_s();
+  d.pitch_mm = h.cycle.tap_pitch_mm(run.spindle_rpm);
+  if (h.cycle.code == 83 || h.cycle.code == 73) d.peck_mm = h.cycle.q_mm;
+  return d;
+}
+
 Interpretation interpret(std::string_view program) {
   ReadOptions lenient;
   lenient.drilling_only = false;
   const DrillingProgram p = read_drilling(program, lenient);
   Interpretation out;
   for (const ToolRun& run : p.runs) {
-    for (const ProgramHole& h : run.holes) {
-      DrilledHole d{run.tool, h.at.x, h.at.y, h.cycle.bottom_mm(), h.line, h.milled_radius_mm.value_or(0.0), run.work_offset, {}, {}, {}};
-      d.dwell_s = h.cycle.dwell_s();
-      d.pitch_mm = h.cycle.tap_pitch_mm(run.spindle_rpm);
-      if (h.cycle.code == 83 || h.cycle.code == 73) d.peck_mm = h.cycle.q_mm;
-      out.holes.push_back(d);
-    }
+    for (const ProgramHole& h : run.holes) out.holes.push_back(drilled_hole(run, h));
   }
   out.rapid_xy_mm = p.rapid_xy_mm;
   out.tool_diameter_mm = p.tool_diameter_mm;

@@ -195,17 +195,14 @@ std::vector<std::string> check_same_holes(const gcode::Interpretation& run, cons
     std::optional<double> peck, dwell_s;  // a canned cycle's Q; the dwell, canned or expanded (gcode::DrilledHole)
     std::optional<double> pitch;          // a tap's (issue 82): G33.1's K, G84's F over S
   };
+  auto key_of = [](const gcode::DrilledHole& h) {
+    return Key{h.tool, h.x_mm, h.y_mm, h.bottom_z_mm, h.line, h.work_offset, h.peck_mm, h.dwell_s, h.pitch_mm};
+  };
   std::vector<Key> want, got;
   for (const gcode::ToolRun& r : expected.runs) {
-    for (const gcode::ProgramHole& h : r.holes) {
-      const std::optional<double> peck = h.cycle.code == 83 || h.cycle.code == 73 ? h.cycle.q_mm : std::nullopt;
-      want.push_back({r.tool, h.at.x, h.at.y, h.cycle.bottom_mm(), h.line, r.work_offset, peck, h.cycle.dwell_s(),
-                      h.cycle.tap_pitch_mm(r.spindle_rpm)});
-    }
+    for (const gcode::ProgramHole& h : r.holes) want.push_back(key_of(gcode::drilled_hole(r, h)));
   }
-  for (const auto& h : run.holes) {
-    got.push_back({h.tool, h.x_mm, h.y_mm, h.bottom_z_mm, h.line, h.work_offset, h.peck_mm, h.dwell_s, h.pitch_mm});
-  }
+  for (const auto& h : run.holes) got.push_back(key_of(h));
   // Made the same way: the same dwell, canned or expanded, and where both are
   // canned cycles the same peck (issue 83); a tap at the same pitch within 1 % (issue 82).
   auto same_making = [&](const Key& a, const Key& b) {

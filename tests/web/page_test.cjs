@@ -250,6 +250,17 @@ async function fresh(context) {
   await page.getByRole('button', { name: 'Random plate', exact: true }).click();
   const clamped = await page.getByRole('alert', { name: 'Error' }).textContent();
   check(clamped.includes('Random holes: from 2 to 200 000'), 'a number out of range is said, not clamped: ' + clamped);
+  // Numbers the command line refuses are refused by the control's name, not taken (Iterations 0, Seed -3, Ants 0).
+  await page.getByText('Advanced: the colony').click();  // Ants is there
+  for (const [label, value, says] of [['Iterations', '0', 'Iterations: a whole number from 1'], ['Seed', '-3', 'Seed: a whole number from 0'],
+                                      ['Ants', '0', 'Ants: a whole number from 1']]) {
+    await fill(page, { [label]: value });
+    const refused = await page.waitForFunction((s) => document.getElementById('error').textContent.includes(s), says, { timeout: 30000 })
+      .then(() => true, () => false);
+    check(refused, label + ' ' + value + ' is refused by the control\'s name: ' + (await page.locator('#error').textContent()));
+    await fill(page, { [label]: '' });
+  }
+  await page.waitForFunction(() => document.getElementById('error').hidden, null, { timeout: 30000 });
 
   check(!/--/.test(await page.evaluate(() => document.body.innerText)), 'nothing the page says names a command-line option ("--")');
 

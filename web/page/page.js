@@ -70,7 +70,7 @@
           e.stopPropagation();
           const f = input.files[0];
           fileSettings[key] = f ? { name: f.name, text: await f.text() } : null;
-          if (files.length && $('stop').disabled) preview();
+          if (files.length && !planning) preview();
         });
       } else if (kind === 'checkbox') {
         input = document.createElement('input');
@@ -126,7 +126,7 @@
     const url = URL.createObjectURL(new Blob([src], { type: 'text/javascript' }));
     worker = new Worker(url);
     workerReady = false;
-    worker.onmessage = (e) => { const t0 = performance.now(); onWorker(e.data); const dt = performance.now() - t0; if (dt > 30) console.log('SLOW ' + e.data.cmd + ' ' + dt.toFixed(0)); };
+    worker.onmessage = (e) => onWorker(e.data);
     worker.onerror = (e) => onWorker({ cmd: 'crashed', message: e.message || 'the worker stopped' });
   }
   function send(msg, transfer) {
@@ -141,8 +141,13 @@
   let routes = null;     // each tool's route as it stands
   let result = null;     // what aco_finish said
   let chart = null, chartData = null, chartTools = 0;
-  let started = 0;
+  let chartPoints = [];  // the points each tool's series has (non-null), for its markers
   let planned = null;    // the job the results are of: its name, files and machine, taken at Plan
+  // The settings (JSON) the holes shown were read with, and each open's: a
+  // plan of the same files and settings reads the same holes, which are not
+  // drawn again (at 2*10^5 holes a 100-200 ms task of the page's thread).
+  let viewKey = null, planShowsView = false;
+  const openKeys = new Map();
 
   // acodrill's messages name its command-line options; here each is the
   // control of this page that means the same (issue 84), and an option the
@@ -173,6 +178,7 @@
     if (planning) return;  // (the controls are disabled; a drop is refused in its handler)
     files = list;
     view = null;
+    viewKey = null;
     $('plan').disabled = true;  // until the files read
     resetChart();
     $('progress-text').textContent = 'No run yet.';
@@ -187,7 +193,8 @@
     if (!files.length || !workerReady) return;
     status('Reading ' + files.map((f) => f.name).join(', ') + '\u2026');
     const copies = files.map((f) => ({ name: f.name, bytes: f.bytes.slice(0) }));
-    send({ cmd: 'open', files: copies, settings: settings() }, copies.map((c) => c.bytes));
+    const s = settings();
+    openKeys.set(send({ cmd: 'open', files: copies, settings: s }, copies.map((c) => c.bytes)), JSON.stringify(s));
   }
 
   function onWorker(msg) {
@@ -218,11 +225,16 @@
         return;
       }
       showError('');
+      const shown = msg.planning && planShowsView && routes === null;  // (no route of a last plan drawn over them)
       view = msg.result;
+      viewKey = msg.planning ? viewKey : openKeys.get(msg.id) || null;
+      openKeys.delete(msg.id);
       routes = null;
       if (!planning) $('plan').disabled = !planReady();
-      drawHoles();
-      describeHoles();
+      if (!shown) {
+        drawHoles();
+        describeHoles();
+      }
       status(msg.planning ? 'Planning\u2026' + (liveRoutes() ? '' : ' (the routes are drawn when the plan ends)') : 'Read ' + (view.holes.length / 3 - operationsOf(view)) + ' holes.');
       return;
     }
@@ -297,8 +309,8 @@
     resetChart();
     running(true);
     document.body.dataset.routing = 'yes';
-    started = performance.now();
     const s = settings();
+    planShowsView = view !== null && viewKey === JSON.stringify(s);
     s.program_name = jobName() + '.' + (EXT[s.dialect] || 'nc');
     const machineSelect = $('set-machine');
     // The machine as plan resolves an empty choice: the router for GRBL and Marlin, else the VF-2.
@@ -314,6 +326,7 @@
   function resetChart() {
     chartTools = 0;
     chartData = [[]];
+    chartPoints = [0];
     if (chart) { chart.destroy(); chart = null; }
     $('chart').textContent = '';
   }
@@ -324,15 +337,20 @@
     if (typeof uPlot === 'undefined') return;
     while (chartTools < p.tools) {
       chartData.push(chartData[0].map(() => null));
+      chartPoints.push(0);
       chartTools++;
     }
     chartData[0].push(p.elapsed_s);
+    chartPoints[p.tool + 1]++;
     for (let t = 1; t <= chartTools; t++) chartData[t].push(t - 1 === p.tool ? p.best : null);
     if (!chart) {
       const series = [{ label: 'seconds' }];
       for (let t = 0; t < chartTools; t++) {
-        // A marker at each point: a tool routed within one slice is one point, seen.
-        series.push({ label: 'tool ' + (t + 1), stroke: COLOURS[t % COLOURS.length], spanGaps: false, points: { size: 5 } });  // uPlot's own rule: markers where the points are few (one alone is seen)
+        // Markers on a tool with few points: one routed within a slice is a
+        // single point, which a line alone would not show. (uPlot's own rule
+        // counts every tool's points together and hides it on a long run.)
+        series.push({ label: 'tool ' + (t + 1), stroke: COLOURS[t % COLOURS.length], spanGaps: false,
+                      points: { size: 5, show: (u, si) => chartPoints[si] <= 30 } });
       }
       const width = Math.max(260, Math.min(860, $('chart').clientWidth || 600));
       const narrow = window.matchMedia('(max-width: 900px)').matches;  // in the bar at the bottom of a phone's screen
@@ -399,16 +417,43 @@
     // of a 100 000-hole drawing, a main-thread task over 100 ms (issue 84).
     const groups = v.tools.length ? v.tools.map((t, k) => ({ colour: COLOURS[k % COLOURS.length], holes: t.holes }))
                                   : [{ colour: '#333', holes: Array.from({ length: n }, (_, i) => i) }];
-    for (const { colour, holes } of groups) {
-      const path = new Path2D();  // one fill a tool
-      for (const i of holes) {
-        if (opOf(i) !== 'drill') continue;
-        const r = Math.max(1, 0.5 * xyd[3 * i + 2] * f.k), x = f.X(xyd[3 * i]), y = f.Y(xyd[3 * i + 1]);
-        if (n > 20000 || r < 2) path.rect(x - r, y - r, 2 * r, 2 * r);
-        else { path.moveTo(x + r, y); path.arc(x, y, r, 0, 2 * Math.PI); }
+    if (n > 20000) {
+      // Many holes: squares set pixel by pixel into a layer put once and
+      // drawn over the routes. The canvas's own fill of 200 000 squares took
+      // the page's thread over 500 ms to render.
+      const layer = document.createElement('canvas');
+      layer.width = canvas.width;
+      layer.height = canvas.height;
+      const lg = layer.getContext('2d');
+      const image = lg.createImageData(layer.width, layer.height);
+      const px = new Uint32Array(image.data.buffer);
+      const w = layer.width, h = layer.height;
+      for (const { colour, holes } of groups) {
+        const c = parseInt(colour.slice(1), 16);
+        const abgr = (0xff000000 | (c & 0xff) << 16 | (c & 0xff00) | (c >> 16)) >>> 0;  // opaque, little-endian
+        for (const i of holes) {
+          if (opOf(i) !== 'drill') continue;
+          const r = Math.max(1, Math.round(0.5 * xyd[3 * i + 2] * f.k));
+          const x = Math.round(f.X(xyd[3 * i])), y = Math.round(f.Y(xyd[3 * i + 1]));
+          for (let yy = Math.max(0, y - r); yy < Math.min(h, y + r); yy++) {
+            for (let xx = Math.max(0, x - r); xx < Math.min(w, x + r); xx++) px[yy * w + xx] = abgr;
+          }
+        }
       }
-      g.fillStyle = colour;
-      g.fill(path);
+      lg.putImageData(image, 0, 0);
+      g.drawImage(layer, 0, 0);
+    } else {
+      for (const { colour, holes } of groups) {
+        const path = new Path2D();  // one fill a tool
+        for (const i of holes) {
+          if (opOf(i) !== 'drill') continue;
+          const r = Math.max(1, 0.5 * xyd[3 * i + 2] * f.k), x = f.X(xyd[3 * i]), y = f.Y(xyd[3 * i + 1]);
+          if (r < 2) path.rect(x - r, y - r, 2 * r, 2 * r);
+          else { path.moveTo(x + r, y); path.arc(x, y, r, 0, 2 * Math.PI); }
+        }
+        g.fillStyle = colour;
+        g.fill(path);
+      }
     }
     g.lineWidth = 1.5;
     for (let i = 0; i < n; i++) {

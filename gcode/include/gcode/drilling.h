@@ -157,6 +157,10 @@ struct ReadOptions {
   bool drilling_only = true;
 };
 
+// A hole as verify compares it (interpreter.h): its place, tool, depth, offset,
+// peck, dwell and a tap's pitch, as the run it is in makes it.
+DrilledHole drilled_hole(const ToolRun& run, const ProgramHole& hole);
+
 // Reads the whole program. Throws ProgramError with the line for what it cannot read.
 DrillingProgram read_drilling(std::string_view text, const ReadOptions& options = {});
 
