@@ -146,6 +146,10 @@ std::vector<BadCase> catalogue() {
       {"program_origin", "a.nc", "G21\nG0 X1 Y1 Z5\nG81 R1 Z-1 F100\nM30\n", "plan {in} -o {out} --origin center", "--origin: a program's coordinates stay"},
       {"program_keep_style_units", "a.nc", "G21\nG0 X1 Y1 Z5\nG81 R1 Z-1 F100\nM30\n", "plan {in} -o {out} --keep-style --units inch", "--keep-style keeps the input's units"},
       {"keep_style_on_a_hole_file", "a.csv", kGoodCsv, "plan {in} -o {out} --keep-style", "--keep-style and --min-spacing apply to a drilling program"},
+      // Issue 83: milling kept as written only in the program's own style, and only a program has it.
+      {"keep_milling_for_another_dialect", "a.nc", "G21\nG0 X1 Y1 Z5\nG81 R1 Z-1 F100\nG80\nG1 Z-1 F100\nG1 X5\nM30\n",
+       "plan {in} -o {out} --keep-milling --dialect grbl", "--keep-milling writes the program in its own style"},
+      {"keep_milling_on_a_hole_file", "a.csv", kGoodCsv, "plan {in} -o {out} --keep-milling", "--keep-milling applies to a drilling program input"},
       // Paths and outputs
       {"missing_input", "", "", "plan {dir}/missing.dxf -o {out}", "missing.dxf: cannot read"},
       {"directory_as_input", "", "", "plan {dir} -o {out}", "is a directory"},

@@ -11,6 +11,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <regex>
 #include <sstream>
 #include <tuple>
 
@@ -276,6 +278,192 @@ TEST(FreeCadPrograms, MarlinsG4SIsSecondsNotASpindleSpeed) {
     for (std::size_t at = r.out.find("DWELL(0.5000)"); at != std::string::npos; at = r.out.find("DWELL(0.5000)", at + 1)) ++dwells;
     EXPECT_EQ(dwells, 2u) << options << "\n" << out << r.out;
   }
+}
+
+// A FreeCAD Job that mills as well as drills (its linuxcnc post; Z 0 the
+// part's bottom, its top at Z 8): T2 drills, T3 profiles the plate with lines
+// and an arc, T2 drills again, T2 (the same tool, no change) mills a line-only
+// slot at Z 6 -- above Z 0, below the top -- and drills once more.
+const std::string kMixedJob =
+    "(Exported by FreeCAD)\n"
+    "G17 G54 G40 G49 G80 G90\n"
+    "G21\n"
+    "(begin operation: Drill1)\n"
+    "M6 T2\n"
+    "M3 S2000\n"
+    "G0 Z14\n"
+    "G98\n"
+    "G0 X10 Y10\n"
+    "G81 X10 Y10 Z0 R12 F100\n"
+    "G0 X90 Y10\n"
+    "G81 X90 Y10 Z0 R12 F100\n"
+    "G0 X20 Y10\n"
+    "G81 X20 Y10 Z0 R12 F100\n"
+    "G0 X80 Y10\n"
+    "G81 X80 Y10 Z0 R12 F100\n"
+    "G80\n"
+    "G0 Z14\n"
+    "(begin operation: Profile)\n"
+    "M6 T3\n"
+    "M3 S10000\n"
+    "G0 X-3 Y0\n"
+    "G0 Z12\n"
+    "G1 X-3 Y0 Z3 F100\n"
+    "G1 X-3 Y50 F600\n"
+    "G2 X0 Y53 I3 J0\n"
+    "G1 X100 Y53\n"
+    "G1 X100 Y-3\n"
+    "G1 X-3 Y-3\n"
+    "G0 Z14\n"
+    "(begin operation: Drill2)\n"
+    "M6 T2\n"
+    "M3 S2000\n"
+    "G0 X15 Y45\n"
+    "G81 X15 Y45 Z0 R12 F100\n"
+    "G0 X85 Y40\n"
+    "G81 X85 Y40 Z0 R12 F100\n"
+    "G0 X16 Y40\n"
+    "G81 X16 Y40 Z0 R12 F100\n"
+    "G80\n"
+    "G0 Z14\n"
+    "(begin operation: Slot)\n"
+    "G0 X40 Y25\n"
+    "G0 Z12\n"
+    "G1 Z6 F100\n"
+    "G1 X60 Y25 F600\n"
+    "G1 X40 Y25\n"
+    "G0 Z14\n"
+    "(begin operation: Drill3)\n"
+    "G0 X70 Y30\n"
+    "G81 X70 Y30 Z0 R12 F100\n"
+    "G0 X30 Y30\n"
+    "G81 X30 Y30 Z0 R12 F100\n"
+    "G0 X50 Y45\n"
+    "G81 X50 Y45 Z0 R12 F100\n"
+    "G80\n"
+    "G0 Z14\n"
+    "M5\n"
+    "M2\n";
+
+// rs274's reading of a program that mills: in canon order, each hole (a feed
+// down at one XY left by a rapid) as "H tool x y bottom", each cut (a feed in
+// XY, an arc, the plunge a cut goes on from) as "C tool feed from -> call".
+// Rapids in XY at or below `top` fail the test unless the input made them.
+struct Canon {
+  std::vector<std::string> events;
+  double rapid_xy = 0;
+};
+
+Canon milling_canon(const std::string& text) {
+  testutil::TempDir t;
+  testutil::spit(t / "p.ngc", text);
+  testutil::spit(t / "tool.tbl", "T2 P2 Z0 D3\nT3 P3 Z0 D6\n");
+  const auto r = testutil::rs274_in(t.path(), "-t tool.tbl -g p.ngc");
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(r.out.find("rror"), std::string::npos) << r.out;
+  struct Call {
+    std::string kind;
+    int tool;
+    double feed;
+    std::vector<double> v;
+  };
+  std::vector<Call> calls;
+  static const std::regex call(R"((STRAIGHT_TRAVERSE|STRAIGHT_FEED|ARC_FEED|SELECT_TOOL|SET_FEED_RATE)\(([^)]*)\))");
+  int tool = 0;
+  double feed = 0;
+  std::istringstream in(r.out);
+  for (std::string line; std::getline(in, line);) {
+    std::smatch m;
+    if (!std::regex_search(line, m, call)) continue;
+    const std::vector<double> v = oracles::numbers(m[2]);
+    if (m[1] == "SELECT_TOOL") tool = static_cast<int>(v.at(0));
+    else if (m[1] == "SET_FEED_RATE") feed = v.at(0);
+    else calls.push_back({m[1], tool, feed, v});
+  }
+  Canon c;
+  double x = 0, y = 0, z = 0;
+  auto f = [](double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3f", std::fabs(v) < 5e-4 ? 0.0 : v);
+    return std::string(text);
+  };
+  for (std::size_t i = 0; i < calls.size(); ++i) {
+    const Call& k = calls[i];
+    const double end_z = k.kind == "ARC_FEED" ? k.v.at(5) : k.v.at(2);
+    const bool moved = std::hypot(k.v[0] - x, k.v[1] - y) > 1e-9;
+    const std::string from = f(x) + " " + f(y) + " " + f(z) + " -> ";
+    std::string args;
+    for (double a : k.v) args += f(a) + " ";
+    if (k.kind == "STRAIGHT_TRAVERSE") {
+      c.rapid_xy += std::hypot(k.v[0] - x, k.v[1] - y);
+      if (moved) EXPECT_GT(std::min(z, end_z), 8.0) << "a rapid in XY at or below the top: " << from << args;
+    } else if (k.kind == "ARC_FEED" || moved) {
+      c.events.push_back("C " + std::to_string(k.tool) + " " + f(k.feed) + " " + from + k.kind + " " + args);
+    } else if (end_z < z) {
+      const Call* next = i + 1 < calls.size() ? &calls[i + 1] : nullptr;
+      const bool cut_on = next && next->kind != "STRAIGHT_TRAVERSE" &&
+                          (next->kind == "ARC_FEED" || std::hypot(next->v[0] - k.v[0], next->v[1] - k.v[1]) > 1e-9);
+      c.events.push_back((cut_on ? "C " : "H ") + std::to_string(k.tool) + " " + (cut_on ? f(k.feed) + " " + from : "") +
+                         f(k.v[0]) + " " + f(k.v[1]) + " " + f(end_z));
+    }
+    x = k.v[0], y = k.v[1], z = end_z;
+  }
+  return c;
+}
+
+// The events between two cuts as a set: the holes a run drills, in any order.
+std::vector<std::vector<std::string>> stretches(const std::vector<std::string>& events) {
+  std::vector<std::vector<std::string>> out(1);
+  for (const std::string& e : events) {
+    if (e[0] == 'C') {
+      if (!out.back().empty()) out.emplace_back();
+      out.back().push_back(e);
+      out.emplace_back();
+    } else {
+      out.back().push_back(e);
+    }
+  }
+  if (out.back().empty()) out.pop_back();
+  for (auto& s : out) std::sort(s.begin(), s.end());
+  return out;
+}
+
+TEST(FreeCadPrograms, MillingIsKeptAsWrittenAndTheDrillingReorderedAroundIt) {
+  // Without --keep-milling a program that mills is refused at its first cut, as before.
+  testutil::TempDir t;
+  testutil::spit(t / "job.ngc", kMixedJob);
+  auto refused = testutil::acodrill_run("plan " + shell_quote(t / "job.ngc") + " -o " + shell_quote(t / "out.ngc"));
+  EXPECT_EQ(refused.code, 2);
+  // (Its G1 at Z 3 reads as travel there, hobby posts' way above Z 0; the arc is a cut.)
+  EXPECT_THAT(refused.err, ::testing::HasSubstr("job.ngc:26: an arc (G2)"));
+  EXPECT_FALSE(std::filesystem::exists(t / "out.ngc"));
+  refused = testutil::acodrill_run("plan " + shell_quote(t / "job.ngc") + " -o " + shell_quote(t / "out.ngc") +
+                                   " --keep-milling --dialect haas");
+  EXPECT_EQ(refused.code, 2);
+  EXPECT_THAT(refused.err, ::testing::HasSubstr("--keep-milling writes the program in its own style"));
+
+  const Canon in = milling_canon(kMixedJob);
+  const std::string out = plan(kMixedJob, "--keep-milling");
+  const Canon got = milling_canon(out);
+  // Every cut the same, in the same place among the holes; the holes between
+  // two cuts the same ones, drilled by the same tool to the same depth.
+  ASSERT_EQ(std::count_if(in.events.begin(), in.events.end(), [](const std::string& e) { return e[0] == 'C'; }), 9);
+  EXPECT_EQ(stretches(got.events), stretches(in.events)) << out;
+  EXPECT_NE(got.events, in.events) << "nothing was reordered";
+  EXPECT_LT(got.rapid_xy, in.rapid_xy) << out;
+  // The drilling between cuts, reordered: the first drilling's line, now 10 20 80 90 or its reverse.
+  const std::size_t x20 = out.find("X20."), x80 = out.find("X80.");
+  ASSERT_NE(x20, std::string::npos);
+  EXPECT_LT(std::min(x20, x80), out.find("M6 T3"));
+  // Every line that mills, as the input wrote it.
+  for (const char* line : {"G1 X-3 Y0 Z3 F100\n", "G2 X0 Y53 I3 J0\n", "G1 X100 Y-3\n", "G1 Z6 F100\n", "G1 X60 Y25 F600\n"}) {
+    EXPECT_THAT(out, ::testing::HasSubstr(line));
+  }
+  // verify, given the input, reads both so: the same holes.
+  testutil::spit(t / "out.ngc", out);
+  const auto verified = testutil::acodrill_run("verify " + shell_quote(t / "out.ngc") + " --holes " + shell_quote(t / "job.ngc"));
+  EXPECT_EQ(verified.code, 0) << verified.out << verified.err;
+  EXPECT_THAT(verified.out, ::testing::HasSubstr("holes 10\n"));
 }
 
 }  // namespace

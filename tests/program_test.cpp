@@ -188,6 +188,24 @@ TEST(program_test, a_cycle_missing_its_word_is_said_once_and_written_as_the_cont
   EXPECT_THAT(out.str(), ::testing::HasSubstr("G83 X3.000 Y3.000 Z-5.000 R2.000 Q7.000"));
 }
 
+// A hole fed with no F ever stated (a post that leaves the feed out): the
+// control's feed is 0, which it refuses; said once, by the first such line,
+// for a cycle and for expanded drilling alike, and written as F0.
+TEST(program_test, a_hole_fed_with_no_feed_stated_is_said_once_and_written_as_f0) {
+  for (const std::string& body : {std::string("G0 X0 Y0 Z5\nG81 X0 Y0 Z-3 R1\nX10\nX5 Y5\nG80\n"),
+                                  std::string("G0 X0 Y0 Z5\nG1 Z-3\nG0 Z5\nG0 X10\nG1 Z-3\nG0 Z5\n")}) {
+    const auto p = gcode::read_drilling("G21 G90\nT1 M6\nM3 S1000\n" + body + "M30\n");
+    ASSERT_EQ(p.notes.size(), 1u) << body;
+    EXPECT_EQ(p.notes[0].line, 5u);
+    EXPECT_THAT(p.notes[0].message, ::testing::HasSubstr("without F (its feed) and none in force"));
+    std::ostringstream out;
+    gcode::write_drilling(out, p, {});
+    EXPECT_THAT(out.str(), ::testing::HasSubstr("F0.000")) << out.str();
+  }
+  // With a feed in force before the hole, nothing to say.
+  EXPECT_TRUE(gcode::read_drilling("G21 G90\nG1 F100\nG0 X0 Y0 Z5\nG81 X0 Y0 Z-3 R1\nM30\n").notes.empty());
+}
+
 // LinuxCNC's G33.1 (issue 82): a tapped hole from where Z is, its K the
 // pitch (inch too); refused in one line without K, without Z, from a Z not
 // known, or moving in X/Y at the part's top.

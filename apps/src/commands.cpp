@@ -181,11 +181,23 @@ int cmd_verify(const VerifyArgs& a, const InputArgs& in, bool quiet) {
   tooling.end_mill_mm = a.bench.end_mill_mm;
   job::parse_mirror_axis(a.bench);
   const std::string text = app::read_file(a.program);
-  gcode::Interpretation run;
-  try {
-    run = gcode::interpret(text);
-  } catch (const gcode::ProgramError& e) {
-    throw app::UserError(a.program, e.line(), e.what());
+  const auto read_program = [&](bool keeping_milling) {
+    try {
+      return keeping_milling ? gcode::interpret_keeping_milling(text) : gcode::interpret(text);
+    } catch (const gcode::ProgramError& e) {
+      throw app::UserError(a.program, e.line(), e.what());
+    }
+  };
+  gcode::Interpretation run = read_program(false);
+  std::string holes_path;
+  for (const std::string& p : a.holes) holes_path += (holes_path.empty() ? "" : " + ") + p;
+  formats::InputOptions in_options = job::input_options(read_input_settings(in));
+  in_options.keep_milling = true;  // an input program that also mills: its drilling is what is compared
+  std::optional<app::LoadedHoles> loaded;
+  if (!a.holes.empty()) {
+    loaded = app::load_job(a.holes, in_options).holes;
+    // It mills too (plan --keep-milling): this one is read so as well, a cut's plunge no hole.
+    if (loaded->program && !loaded->program->milling_lines.empty()) run = read_program(true);
   }
   std::map<int, std::size_t> per_tool;
   for (const auto& h : run.holes) per_tool[h.tool]++;
@@ -196,11 +208,8 @@ int cmd_verify(const VerifyArgs& a, const InputArgs& in, bool quiet) {
                 d == run.tool_diameter_mm.end() ? "unknown" : gcode::format_number(d->second, 3).c_str());
   }
   std::printf("rapid_xy_mm %s\n", gcode::format_number(run.rapid_xy_mm, 3).c_str());
-  if (a.holes.empty()) return 0;
-  std::string holes_path;
-  for (const std::string& p : a.holes) holes_path += (holes_path.empty() ? "" : " + ") + p;
-  const formats::InputOptions in_options = job::input_options(read_input_settings(in));
-  app::LoadedHoles expected = app::load_job(a.holes, in_options).holes;
+  if (!loaded) return 0;
+  app::LoadedHoles& expected = *loaded;
   std::vector<planning::OperationSpec> operations;  // the features' operations, in their order
   {
     // Issue 82: the operations plan makes of the hole features: taps where the

@@ -82,6 +82,10 @@ void print_summary(const PlanArgs& a, const job::Result& r) {
   if (r.program_input) {
     std::fprintf(stderr, "  coordinates as in the input program (its work offset); holes X%s..%s Y%s..%s mm\n",
                  f3(e.x_min).c_str(), f3(e.x_max).c_str(), f3(e.y_min).c_str(), f3(e.y_max).c_str());
+    if (r.program_input->milling_lines) {
+      std::fprintf(stderr, "  %zu line(s) of milling from line %u kept as written and where they were; the drilling between them reordered (times are the drilling's)\n",
+                   r.program_input->milling_lines, static_cast<unsigned>(r.program_input->first_milling_line));
+    }
     if (r.program_input->style == "keep") {
       std::fprintf(stderr, "  written in the input program's own style (--keep-style; --dialect NAME writes another)\n");
     } else {

@@ -358,7 +358,7 @@ LoadedHoles parse_holes(const std::string& path, std::string_view data, const In
     case InputFormat::Program:
       check_text(shown, data);
       refuse_other_machine_files(shown, data);
-      out = parse_program(shown, data);
+      out = parse_program(shown, data, options.keep_milling);
       break;
   }
   apply_slot_policy(out, options.slots, shown, options.dxf.max_holes);

@@ -23,11 +23,11 @@ aco::HoleSet program_holes(const gcode::DrillingProgram& program) {
   return holes;
 }
 
-LoadedHoles parse_program(const std::string& path, std::string_view data) {
+LoadedHoles parse_program(const std::string& path, std::string_view data, bool keep_milling) {
   LoadedHoles out;
   out.format = InputFormat::Program;
   try {
-    out.program = std::make_shared<const gcode::DrillingProgram>(gcode::read_drilling(data));
+    out.program = std::make_shared<const gcode::DrillingProgram>(gcode::read_drilling(data, {true, keep_milling}));
   } catch (const gcode::ProgramError& e) {
     throw InputError(path, e.line(), e.what());
   }

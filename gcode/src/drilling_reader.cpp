@@ -387,6 +387,41 @@ class Reader {
 
   double scale() const { return inch_ ? 25.4 : 1.0; }
 
+  // A line that mills: refused in a drilling program; with keep_milling
+  // kept where it is, ending the tool run it is in.
+  void cutting(const std::string& what) {
+    if (!options_.drilling_only) return;
+    if (!options_.keep_milling) refuse(what);
+    if (out_.milling_lines.empty()) out_.first_milling = what;
+    if (out_.milling_lines.empty() || out_.milling_lines.back() != lineno_) out_.milling_lines.push_back(lineno_);
+    boundary_ = true;
+  }
+
+  // A hole fed with no F stated before it: a feed of 0, which controls
+  // refuse (LinuxCNC: "Cannot feed with zero feed rate"); said once, and the
+  // output says F0 as the control reads it.
+  void no_feed(const std::string& what) {
+    if (feed_ > 0 || told_no_feed_) return;
+    told_no_feed_ = true;
+    out_.notes.push_back({lineno_, what + " without F (its feed) and none in force: a feed of 0, which the control refuses; written as F0 (give the tool's feed in the CAM)"});
+  }
+
+  // keep_milling: the feed down this cut goes on from was its plunge, not a
+  // hole (a hole is only what the spindle leaves at the XY it went down at).
+  void drop_plunge() {
+    if (!hole_.open || hole_.out) return;
+    std::vector<ToolRun>& runs = out_.runs;
+    runs[hole_.run].holes.erase(runs[hole_.run].holes.begin() + static_cast<std::ptrdiff_t>(hole_.index));
+    if (runs[hole_.run].holes.empty() && hole_.run + 1 == runs.size()) {
+      // The run held only the plunge: what began it begins the next one.
+      pending_change_ = pending_change_ || runs.back().tool_change;
+      pending_pause_ = pending_pause_ || runs.back().pause;
+      runs.pop_back();
+      if (runs.empty()) holes_seen_ = false;
+    }
+    hole_ = OpenHole{};
+  }
+
   void block(const std::vector<Word>& words) {
     std::optional<double> wx, wy, wz, wr, wq, wi, wj;
     std::optional<std::string> wp;
@@ -412,7 +447,7 @@ class Reader {
           switch (code) {
             case 0: motion = Motion::Rapid; break;
             case 10: motion = Motion::Feed; break;
-            case 20: case 30: if (options_.drilling_only) refuse("an arc (G" + w.text + ")"); motion = Motion::Arc; break;
+            case 20: case 30: cutting("an arc (G" + w.text + ")"); motion = Motion::Arc; break;
             case 40: dwell = true; break;
             case 730: case 740: case 810: case 820: case 830: case 840: case 850: case 860: case 870: case 880: case 890:
               motion = Motion::Cycle;
@@ -447,7 +482,7 @@ class Reader {
               break;
             case 430: g43 = true; break;
             case 490: length_offset_ = 0; break;
-            case 410: case 420: if (options_.drilling_only) refuse("cutter compensation (G" + w.text + ")"); break;
+            case 410: case 420: cutting("cutter compensation (G" + w.text + ")"); break;
             case 650: if (options_.drilling_only) refuse("a macro call (G65)"); break;
             case 760: if (options_.drilling_only) refuse("G76 (threading or fine boring)"); break;
             default:
@@ -707,7 +742,10 @@ class Reader {
       // Z not known after a move to machine Z home: the spindle is at the top.
       std::optional<double> low = z_ ? z_ : z_homed_ ? std::optional<double>(kAtHome) : std::nullopt;
       if (low && nz) low = std::min(*low, *nz);
-      const bool above = low && (*low > kTiny || (feed_start_z_ && *low >= *feed_start_z_ - kTiny));
+      // Kept milling (FreeCAD: Z 0 is the part's bottom, its top anywhere above)
+      // cuts above Z 0 too: there only travel where the last hole's feed began is travel.
+      const bool above_feed_start = low && feed_start_z_ && *low >= *feed_start_z_ - kTiny;
+      const bool above = options_.keep_milling ? above_feed_start : low && (*low > kTiny || above_feed_start);
       if (!above && hole_.open && !hole_.out && out_.runs[hole_.run].holes[hole_.index].milled_radius_mm) {
         // Inside a hole being milled (along a slot, to the centre): the cut goes on.
         xy_ = to;
@@ -718,9 +756,11 @@ class Reader {
         return;
       }
       if (!above) {
-        if (options_.drilling_only) {
-          refuse("G1 moves in X/Y at Z" + (z_ ? format_number(*z_, 3) : std::string(" unknown")) +
-                 ", at or below the top of the part: a cutting move");
+        cutting("G1 moves in X/Y at Z" + (z_ ? format_number(*z_, 3) : std::string(" unknown")) +
+                ", at or below the top of the part: a cutting move");
+        if (options_.keep_milling) {
+          drop_plunge();
+          arrive_line_ = 0;  // a hole begun here begins after the cut, which stays as written
         }
         close_hole();
         xy_ = to;
@@ -764,6 +804,7 @@ class Reader {
         hole_.trailing.clear();
         hole_.out = false;
       } else {
+        no_feed("G1 down in Z");
         ToolRun& run = current_run();
         ProgramHole h;
         h.at = xy_;
@@ -802,6 +843,18 @@ class Reader {
   void arc(aco::Point2 to, std::optional<double> wz, aco::Point2 ij) {
     std::optional<double> nz;
     if (wz) nz = absolute_ ? *wz : z_.value_or(0.0) + *wz;
+    if (options_.keep_milling) {
+      // Milling kept as written (a helix too): the spindle ends where the arc does.
+      cutting("an arc");  // (a modal arc's line, after the G2/G3 that began them)
+      drop_plunge();
+      close_hole();
+      xy_ = to;
+      arrive_line_ = 0;
+      arrive_z_ = nz ? nz : z_;
+      approach_.clear();
+      if (nz) z_ = nz;
+      return;
+    }
     const aco::Point2 centre{xy_.x + ij.x, xy_.y + ij.y};
     const double radius = std::hypot(ij.x, ij.y);
     bool helix = false;
@@ -929,6 +982,7 @@ class Reader {
                                          format_number(*cycle_.q_mm / scale(), inch_ ? 4 : 3)});
     }
     cycle_.feed_mm_min = feed_;
+    no_feed("G" + std::to_string(cycle_.code));
     cycle_.retract_initial = retract_initial_;
     cycle_.rigid = rigid_ && (cycle_.code == 84 || cycle_.code == 74);
     // The control first rises to R if below it, then moves in XY.
@@ -980,6 +1034,7 @@ class Reader {
   int spindle_ = 0, selected_tool_ = 0, work_offset_ = 54, length_offset_ = 0, coolant_ = 0;
   bool wx_given_ = false, wy_given_ = false;  // the block being run has X / Y words
   bool t_words_seen_ = false;
+  bool told_no_feed_ = false;
   bool z_homed_ = false;  // z_ unknown means at machine Z home (G28/G53 Z), not "never said"
   std::string ended_by_;
   // The Z where the last hole's feed began: the spindle is above the part

@@ -14,10 +14,9 @@ DrilledHole drilled_hole(const ToolRun& run, const ProgramHole& h) {
   return d;
 }
 
-Interpretation interpret(std::string_view program) {
-  ReadOptions lenient;
-  lenient.drilling_only = false;
-  const DrillingProgram p = read_drilling(program, lenient);
+namespace {
+
+Interpretation interpretation_of(const DrillingProgram& p) {
   Interpretation out;
   for (const ToolRun& run : p.runs) {
     for (const ProgramHole& h : run.holes) out.holes.push_back(drilled_hole(run, h));
@@ -27,6 +26,20 @@ Interpretation interpret(std::string_view program) {
   out.inch = p.inch;
   out.tool_changes = p.tool_changes;
   return out;
+}
+
+}  // namespace
+
+Interpretation interpret(std::string_view program) {
+  ReadOptions lenient;
+  lenient.drilling_only = false;
+  return interpretation_of(read_drilling(program, lenient));
+}
+
+Interpretation interpret_keeping_milling(std::string_view program) {
+  ReadOptions keeping;
+  keeping.keep_milling = true;
+  return interpretation_of(read_drilling(program, keeping));
 }
 
 }  // namespace gcode

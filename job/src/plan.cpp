@@ -184,6 +184,7 @@ void PlanJob::Impl::prepare_holes() {
   if (s.keep_style || s.min_spacing_mm > 0) {
     throw UserError("--keep-style and --min-spacing apply to a drilling program input (G-code)");
   }
+  if (s.input.keep_milling) throw UserError("--keep-milling applies to a drilling program input (G-code) that also mills");
   const std::string first_input = r.inputs.sources.front().file == "-" ? "<stdin>" : r.inputs.sources.front().file;
   o.hole_source = r.inputs.hole_source;
   o.keep_sources_apart = s.keep_files_apart;

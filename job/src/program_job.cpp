@@ -39,6 +39,9 @@ void PlanJob::Impl::prepare_program() {
     }
     throw UserError(source, 0, "no holes to drill: the program has no drilling move (no canned cycle, no feed down in Z)");
   }
+  if (s.input.keep_milling && !keeps_style()) {
+    throw UserError("--keep-milling writes the program in its own style, its milling as written: drop --dialect and --units");
+  }
   const bool inch = s.units.empty() ? input.inch : o.program.units == gcode::Units::Inch;
   if (keeps_style() && inch != input.inch) {
     throw UserError("--keep-style keeps the input's units (" + std::string(input.inch ? "inch" : "mm") + "); drop --units");
@@ -99,7 +102,9 @@ void PlanJob::Impl::reorder_and_write() {
   r.placement.origin = planning::Origin{planning::OriginKind::Drawing, {}};
   r.placement.extent = planning::extent_of(r.holes);
   r.program_input = ReportContext::ProgramInput{r.plan.groups.size(), reordered.overlapping_holes,
-                                                reordered.overlap_groups, keeps_style() ? "keep" : "dialect"};
+                                                reordered.overlap_groups, keeps_style() ? "keep" : "dialect",
+                                                input.milling_lines.size(),
+                                                input.milling_lines.empty() ? 0 : input.milling_lines.front()};
   ReportContext ctx{source, s.program_name, r.placement, loaded.name, &loaded, {}, 1, 1, r.program_input};
   ctx.dialect = o.program.dialect;
   detail::make_outputs(r, s, o, ctx, planning::to_passes(r.holes, r.plan, o.machine));

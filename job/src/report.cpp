@@ -110,7 +110,8 @@ std::string report_json(const aco::HoleSet& holes, const PlanResult& plan, const
     j["program_input"] = {{"runs", pi.runs},
                           {"overlapping_holes_in_input_order", pi.overlapping_holes},
                           {"overlap_groups", pi.overlap_groups},
-                          {"style", pi.style}};
+                          {"style", pi.style},
+                          {"milling_lines_kept", pi.milling_lines}};
   }
   // The minutes a shop pays for: one panel (one run of the program) and a batch of them, beside the input order's.
   j["panel"] = {{"copies", ctx.panel_copies}, {"holes_per_copy", ctx.panel_copies ? holes.size() / ctx.panel_copies : 0}};

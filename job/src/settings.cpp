@@ -93,6 +93,7 @@ formats::InputOptions input_options(const InputSettings& a) {
   }
   o.concentric_separate = a.concentric == "separate";
   o.step = a.step;
+  o.keep_milling = a.keep_milling;
   if (a.processes) {
     o.processes = std::make_shared<const formats::ProcessTable>(planning::parse_process_table(a.processes->text, a.processes->name));
   }

@@ -287,7 +287,10 @@ std::vector<std::string> self_check(const std::string& program_text, const aco::
 
 std::vector<std::string> self_check(const std::string& program_text, const gcode::DrillingProgram& input) {
   try {
-    return check_same_holes(gcode::interpret(program_text), input);
+    // Its milling copied as written: read the same way the input was, plunges no holes.
+    return check_same_holes(input.milling_lines.empty() ? gcode::interpret(program_text)
+                                                        : gcode::interpret_keeping_milling(program_text),
+                            input);
   } catch (const gcode::ProgramError& e) {
     return {"the program does not read back: line " + std::to_string(e.line()) + ": " + e.what()};
   }

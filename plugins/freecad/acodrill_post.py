@@ -1,9 +1,11 @@
 # acodrill as a FreeCAD CAM (Path) post-processor (issue 83).
 #
 # It posts the Job with the FreeCAD post you name, exactly as FreeCAD would,
-# then reorders the drilling with `acodrill plan --keep-style`: every
-# drilling operation's holes in the order an ant colony finds shortest, each
-# with its own cycle, depth, pecks and dwell; every other line as posted.
+# then reorders the drilling with `acodrill plan --keep-style --keep-milling`:
+# every drilling operation's holes in the order an ant colony finds shortest,
+# each with its own cycle, depth, pecks and dwell; every other line as posted,
+# a profile's or pocket's milling too (the drilling is reordered between them,
+# never across one).
 #
 # Install: copy this file into FreeCAD's macro folder (Macro > Macros...
 # shows it; or Preferences > Path > Job > "Post processor" search path),
@@ -84,7 +86,7 @@ def export(objectslist, filename, argstring):
             with open(posted, "w") as f:
                 f.write(text)
         reordered = os.path.join(work, "reordered.nc")
-        run = subprocess.run([program, "plan", posted, "-o", reordered, "--keep-style", "-q"] + plan_args,
+        run = subprocess.run([program, "plan", posted, "-o", reordered, "--keep-style", "--keep-milling", "-q"] + plan_args,
                              capture_output=True, text=True)
         if run.returncode != 0:
             # acodrill's one line, which names what it could not take; FreeCAD shows it.

@@ -1,4 +1,4 @@
-// Both readings of a program (verify's lenient one, plan's drilling-only one)
+// The readings of a program (verify's lenient one, plan's drilling-only one, with its milling kept)
 // and, for what reads as drilling, both writers: the reordered program must
 // read back to as many holes as the input has. A mismatch aborts (a finding).
 #include <cstdlib>
@@ -43,6 +43,22 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       const gcode::DrillingProgram back = gcode::read_drilling(out.str());
       if (back.hole_count() != p.hole_count()) std::abort();
     }
+  } catch (const gcode::ProgramError&) {
+  }
+  // A program that also mills (plan --keep-milling): its own style, read back
+  // the same way, drills as many holes, and every line that milled is still there.
+  try {
+    gcode::ReadOptions keeping;
+    keeping.keep_milling = true;
+    const gcode::DrillingProgram p = gcode::read_drilling(text, keeping);
+    gcode::DrillingWriteSettings s;
+    s.inch = p.inch;
+    s.decimals = p.decimals;
+    s.keep_style = true;
+    std::ostringstream out;
+    gcode::write_drilling(out, p, s);
+    const gcode::DrillingProgram back = gcode::read_drilling(out.str(), keeping);
+    if (!p.milling_lines.empty() && back.milling_lines.size() != p.milling_lines.size()) std::abort();
   } catch (const gcode::ProgramError&) {
   }
   return 0;

@@ -85,6 +85,9 @@ struct InputOptions {
   // Issue 86: the step of an ODB++ or IPC-2581 job to drill (--step; empty:
   // the panel step if there is one, else the only step).
   std::string step;
+  // A G-code program that also mills: its milling kept as written, the
+  // drilling around it reordered (plan --keep-milling, the FreeCAD post).
+  bool keep_milling = false;
 };
 
 struct Note {

@@ -21,7 +21,8 @@ LoadedHoles parse_excellon(const std::string& path, std::string_view data, const
 
 bool looks_like_gerber(std::string_view head);
 // A drilling program: its holes, and the program itself in LoadedHoles::program.
-LoadedHoles parse_program(const std::string& path, std::string_view data);
+// keep_milling: gcode::ReadOptions::keep_milling (plan --keep-milling).
+LoadedHoles parse_program(const std::string& path, std::string_view data, bool keep_milling = false);
 
 LoadedHoles parse_gerber(const std::string& path, std::string_view data, const InputOptions& options);
 

@@ -51,5 +51,9 @@ struct Interpretation {
 };
 
 Interpretation interpret(std::string_view program);
+// The same, read as a drilling program whose milling is kept in place
+// (ReadOptions::keep_milling): a plunge a cut goes on from is no hole. How
+// acodrill checks the programs it writes from such an input.
+Interpretation interpret_keeping_milling(std::string_view program);
 
 }  // namespace gcode

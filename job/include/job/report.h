@@ -27,6 +27,9 @@ struct ReportContext {
     std::size_t runs = 0;
     std::size_t overlapping_holes = 0, overlap_groups = 0;  // kept in input order
     std::string style;                                      // "dialect" or "keep"
+    // --keep-milling: the input's lines that mill, copied as written, and the first of them.
+    std::size_t milling_lines = 0;
+    std::uint32_t first_milling_line = 0;
   };
   std::optional<ProgramInput> program_input;
   gcode::Dialect dialect = gcode::Dialect::Haas;  // the program's: how its tools' holes are made (the "cycle")

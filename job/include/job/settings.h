@@ -55,6 +55,7 @@ struct InputSettings {
   std::string concentric = "features";  // features | separate (issue 82)
   std::string step;                      // an ODB++ or IPC-2581 job's step (issue 86); empty: its panel, else its only step
   std::optional<NamedText> processes;    // a process table (JSON, issue 82)
+  bool keep_milling = false;             // a program's milling kept as written (--keep-milling, issue 83)
 };
 
 // The tools on the bench and the side of the board (--drills, --end-mill, --side, ...).
