@@ -113,6 +113,12 @@ std::vector<BadCase> catalogue() {
       {"csv_negative_diameter", "a.csv", "1,2,-3\n", plan, "a.csv:1: negative diameter"},
       {"csv_nan", "a.csv", "1,nan,3\n", plan, "a.csv:1:"},
       {"csv_binary", "a.csv", std::string("1,2,3\n\0\0\0\x01", 10), plan, "binary data"},
+      // Issue 84: files opened by mistake say what they are, and what acodrill reads.
+      {"png_named_drl", "a.drl", std::string("\x89PNG\r\n\x1A\n\0\0\0\rIHDR", 16), plan,
+       "a.drl: a PNG image, not a hole file: acodrill reads DXF, Excellon, Gerber, IPC-2581, ODB++, another CAM's G-code"},
+      {"dwg_drawing", "a.dwg", std::string("AC1032\0\0\0\0", 10), plan, "a.dwg: an AutoCAD DWG drawing (save it as DXF)"},
+      {"text_named_drl", "a.drl", "hello world\nthis is no drill file\n", plan,
+       "a.drl:1: unexpected \"hello world\": not a hole file acodrill recognises (acodrill reads DXF, Excellon, Gerber"},
       // TSPLIB
       {"tsplib_no_coords", "a.tsp", "NAME : a\nTYPE : TSP\nDIMENSION : 3\nEDGE_WEIGHT_TYPE : EUC_2D\nEOF\n", "tsp {in}", "no NODE_COORD_SECTION"},
       {"tsplib_wrong_dimension", "a.tsp", "NAME : a\nDIMENSION : 3\nNODE_COORD_SECTION\n1 0 0\n2 1 1\nEOF\n", "tsp {in}", "DIMENSION is 3"},

@@ -16,6 +16,40 @@ namespace formats {
 
 namespace {
 
+// What acodrill reads, for the messages that say a file is none of it.
+constexpr const char* kFormatsRead =
+    "acodrill reads DXF, Excellon, Gerber, IPC-2581, ODB++, another CAM's G-code drilling program, an XML hole map, CSV "
+    "and TSPLIB";
+
+// Files people open by mistake, known by their first bytes: named, with what to do.
+void refuse_known_binary(const std::string& path, std::string_view data) {
+  struct Kind {
+    std::string_view magic;
+    const char* what;
+  };
+  static const Kind kinds[] = {
+      {"\x89PNG\r\n\x1A\n", "a PNG image"},
+      {"\xFF\xD8\xFF", "a JPEG image"},
+      {"GIF87a", "a GIF image"},
+      {"GIF89a", "a GIF image"},
+      {"%PDF-", "a PDF document"},
+      {"AC10", "an AutoCAD DWG drawing (save it as DXF)"},
+      {"\xD0\xCF\x11\xE0\xA1\xB1\x1A\xE1", "an OLE compound file (an old Office document or a SolidWorks part)"},
+      {"\x7F" "ELF", "a program (ELF)"},
+      {"Rar!\x1A\x07", "a RAR archive (unpack it; acodrill reads zip and tar archives of ODB++ and IPC-2581)"},
+      {"7z\xBC\xAF\x27\x1C", "a 7-Zip archive (unpack it; acodrill reads zip and tar archives of ODB++ and IPC-2581)"},
+      {"ISO-10303-21;", "a STEP model (export the holes from CAD as DXF)"},
+  };
+  for (const Kind& k : kinds) {
+    if (data.substr(0, k.magic.size()) == k.magic) {
+      throw InputError(path, 0, std::string(k.what) + ", not a hole file: " + kFormatsRead);
+    }
+  }
+  if (data.size() > 64 && data.substr(0, 2) == "MZ" && data.substr(0, 64).find('\0') != std::string_view::npos) {
+    throw InputError(path, 0, std::string("a Windows program, not a hole file: ") + kFormatsRead);
+  }
+}
+
 void check_text(const std::string& path, std::string_view data) {
   if (data.empty()) throw InputError(path, 0, "empty file: no holes");
   std::string_view head = data.substr(0, 4096);
@@ -24,7 +58,7 @@ void check_text(const std::string& path, std::string_view data) {
                                       static_cast<unsigned char>(head[0]) == 0xFF ||
                                       static_cast<unsigned char>(head[0]) == 0xFE);
     throw InputError(path, 1, utf16 ? "UTF-16 text is not supported; save the file as ASCII or UTF-8"
-                                   : "binary data: not a hole file acodrill reads (DXF, Excellon, Gerber, IPC-2581, ODB++, XML, CSV, TSPLIB)");
+                                   : std::string("binary data, not a hole file: ") + kFormatsRead);
   }
 }
 
@@ -145,7 +179,10 @@ const char* to_string(InputFormat f) {
   return "?";
 }
 
-InputFormat detect_format(const std::string& path, std::string_view data) {
+namespace {
+
+// The format the file's content shows, if any.
+std::optional<InputFormat> format_by_content(std::string_view data) {
   if (dxf::looks_like_dxf(data.substr(0, 65536))) return InputFormat::Dxf;
   // An archive (an ODB++ job, or KiCad's zipped IPC-2581): what is inside decides, in parse_sources.
   if (archive_kind(data) != ArchiveKind::None) return InputFormat::Odb;
@@ -159,6 +196,13 @@ InputFormat detect_format(const std::string& path, std::string_view data) {
   for (const char* key : {"NAME", "TYPE", "DIMENSION", "COMMENT", "EDGE_WEIGHT_TYPE"}) {
     if (head.rfind(key, 0) == 0) return InputFormat::Tsplib;
   }
+  return std::nullopt;
+}
+
+}  // namespace
+
+InputFormat detect_format(const std::string& path, std::string_view data) {
+  if (const auto by_content = format_by_content(data)) return *by_content;
   const std::string ext = lower_ext(path);
   if (ext == "dxf") return InputFormat::Dxf;
   if (ext == "tsp") return InputFormat::Tsplib;
@@ -274,11 +318,7 @@ void refuse_other_machine_files(const std::string& path, std::string_view data) 
   }
 }
 
-}  // namespace
-
-LoadedHoles parse_holes(const std::string& path, std::string_view data, const InputOptions& options) {
-  const std::string shown = path == "-" ? "<stdin>" : path;
-  if (data.empty()) throw InputError(shown, 0, "empty file: no holes");
+LoadedHoles parse_holes_as(const std::string& path, const std::string& shown, std::string_view data, const InputOptions& options) {
   LoadedHoles out;
   switch (detect_format(path, data)) {
     case InputFormat::Ipc2581:
@@ -365,6 +405,37 @@ LoadedHoles parse_holes(const std::string& path, std::string_view data, const In
   filter(out, options);
   if (path != "-") out.name = out.format == InputFormat::Tsplib ? out.name : stem(path);
   return out;
+}
+
+// The number of the first line with something on it.
+std::uint32_t first_code_line(std::string_view data) {
+  std::uint32_t first = 0;
+  for_each_line(data.substr(0, 65536), [&](std::uint32_t no, std::string_view line) {
+    if (trim(line).empty()) return true;
+    first = no;
+    return false;
+  });
+  return first;
+}
+
+}  // namespace
+
+LoadedHoles parse_holes(const std::string& path, std::string_view data, const InputOptions& options) {
+  const std::string shown = path == "-" ? "<stdin>" : path;
+  if (data.empty()) throw InputError(shown, 0, "empty file: no holes");
+  refuse_known_binary(shown, data);
+  // Taken for Excellon or CSV by its name alone (nothing in it looked like
+  // any format): a file that fails at once is most likely none of them.
+  if (!format_by_content(data) && lower_ext(path) != "csv") {
+    refuse_other_machine_files(shown, data);
+    try {
+      return parse_holes_as(path, shown, data, options);
+    } catch (const InputError& e) {
+      if (e.line() == 0 || e.line() > first_code_line(data)) throw;
+      throw InputError(e.file(), e.line(), std::string(e.what()) + ": not a hole file acodrill recognises (" + kFormatsRead + ")");
+    }
+  }
+  return parse_holes_as(path, shown, data, options);
 }
 
 }  // namespace formats
