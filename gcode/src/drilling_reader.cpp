@@ -653,7 +653,7 @@ class Reader {
         cycle_block(true, at, std::nullopt, std::nullopt, std::nullopt, std::nullopt, std::string());
       }
     } else if (motion_ == Motion::Arc) {
-      arc(to, wz, {wi.value_or(0.0), wj.value_or(0.0)});
+      if (wx || wy || wz) arc(to, wz, {wi.value_or(0.0), wj.value_or(0.0)});  // (a line without axis words does not move)
     } else {
       wx_given_ = wx.has_value();
       wy_given_ = wy.has_value();
