@@ -146,6 +146,8 @@ std::vector<BadCase> catalogue() {
       {"program_o_call", "a.nc", "G21\nG0 X1 Y1 Z5\nG81 R1 Z-1 F100\no100 call\nM30\n", "plan {in} -o {out}", "a.nc:4: a subroutine or flow control"},
       {"program_other_axis", "a.nc", "G21\nG0 X1 Y1 Z5\nG0 A90\nG81 R1 Z-1 F100\nM30\n", "plan {in} -o {out}", "a.nc:3: the A axis"},
       {"program_g92", "a.nc", "G21\nG92 X0 Y0\nG0 X1 Y1 Z5\nG81 R1 Z-1 F100\nM30\n", "plan {in} -o {out}", "a.nc:2: G92 changes the coordinate system"},
+      {"program_units_changed", "a.nc", "G20 G90\nG0 X1 Y1 Z0.2\nG81 R0.1 Z-0.1 F10\nG80\nG21\nG0 X30 Y30 Z5\nG81 R1 Z-3 F100\nG80\nM30\n",
+       "plan {in} -o {out}", "a.nc:7: a hole in mm after holes in inch"},
       {"program_plane", "a.nc", "G21 G18\nG0 X1 Y1 Z5\nG81 R1 Z-1 F100\nM30\n", "plan {in} -o {out}", "a.nc:1: another plane (G18)"},
       {"program_repeats", "a.nc", "G21\nG0 X1 Y1 Z5\nG81 X2 R1 Z-2 L5 F100\nM30\n", "plan {in} -o {out}", "a.nc:3: L5 in absolute mode (G90) drills one place 5 times"},
       {"program_no_holes", "a.nc", "G21\nG0 X1 Y1 Z5\nG0 Z1\nM30\n", "plan {in} -o {out}", "no holes"},

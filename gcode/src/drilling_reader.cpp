@@ -707,6 +707,9 @@ class Reader {
     if (!holes_seen_) {
       holes_seen_ = true;
       first_hole_inch_ = inch_;
+    } else if (inch_ != first_hole_inch_ && options_.drilling_only) {
+      // Every hole is written in one unit (in the input's style, the first hole's).
+      refuse(std::string("a hole in ") + (inch_ ? "inch" : "mm") + " after holes in " + (first_hole_inch_ ? "inch" : "mm"));
     }
     return out_.runs.back();
   }
