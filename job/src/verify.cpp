@@ -43,6 +43,16 @@ class CellIndex {
     auto it = std::lower_bound(entries_.begin(), entries_.end(), std::make_pair(c, std::size_t{0}));
     for (; it != entries_.end() && it->first == c; ++it) f(it->second);
   }
+  // Every entry in the 3 x 3 cells about c: a search a column (the column's
+  // three cells lie together in the sorted entries), not one a cell.
+  template <class F>
+  void each_around(Cell c, F&& f) const {
+    for (long long dx = -1; dx <= 1; ++dx) {
+      const Cell from{c.first + dx, c.second - 1};
+      auto it = std::lower_bound(entries_.begin(), entries_.end(), std::make_pair(from, std::size_t{0}));
+      for (; it != entries_.end() && it->first.first == from.first && it->first.second <= c.second + 1; ++it) f(it->second);
+    }
+  }
 
  private:
   std::vector<std::pair<Cell, std::size_t>> entries_;
@@ -67,25 +77,24 @@ std::vector<std::string> check_drilled(const gcode::Interpretation& run, const a
   // Issue 82: where each hole feature's operations are made (program hole
   // index, by the expected hole), to check their order at each place.
   std::vector<std::size_t> made_by(expected.size(), run.holes.size());
+  // (Reused from hole to hole, and the place written only for a fault: at
+  // 10^6 holes this check is part of every plan's outputs, in the page too.)
+  std::vector<std::size_t> matches, same_tool;
   for (const aco::Hole& h : expected) {
-    auto [cx, cy] = cell(h.center.x, h.center.y);
-    std::vector<std::size_t> matches;
-    for (long long dx = -1; dx <= 1; ++dx) {
-      for (long long dy = -1; dy <= 1; ++dy) {
-        grid.each_in({cx + dx, cy + dy}, [&](std::size_t i) {
-          const auto& d = run.holes[i];
-          if (std::fabs(d.x_mm - h.center.x) <= tol && std::fabs(d.y_mm - h.center.y) <= tol) matches.push_back(i);
-        });
-      }
-    }
-    const std::string at = "(" + gcode::format_number(h.center.x, 3) + ", " + gcode::format_number(h.center.y, 3) + ")";
+    matches.clear();
+    grid.each_around(cell(h.center.x, h.center.y), [&](std::size_t i) {
+      const auto& d = run.holes[i];
+      if (std::fabs(d.x_mm - h.center.x) <= tol && std::fabs(d.y_mm - h.center.y) <= tol) matches.push_back(i);
+    });
+    const auto at_text = [&] { return "(" + gcode::format_number(h.center.x, 3) + ", " + gcode::format_number(h.center.y, 3) + ")"; };
     if (matches.empty()) {
+      const std::string at = at_text();
       faults.push_back("hole " + at + " D" + gcode::format_number(h.diameter, 3) + " is not drilled");
       continue;
     }
     // Concentric holes share a position: the one that drills this hole is the
     // one whose tool has its diameter, where the program names its tools.
-    std::vector<std::size_t> same_tool;
+    same_tool.clear();
     for (std::size_t m : matches) {
       auto known = run.tool_diameter_mm.find(run.holes[m].tool);
       if (known == run.tool_diameter_mm.end() || h.diameter <= 0 ||
@@ -94,6 +103,7 @@ std::vector<std::string> check_drilled(const gcode::Interpretation& run, const a
       }
     }
     if (same_tool.empty()) {
+      const std::string at = at_text();
       const auto& d = run.holes[matches.front()];
       faults.push_back("hole " + at + " D" + gcode::format_number(h.diameter, 3) + " is " +
                        (d.milled_radius_mm > 0 ? "milled to D" + gcode::format_number(2 * d.milled_radius_mm + run.tool_diameter_mm.at(d.tool), 3) + " with T"
@@ -108,7 +118,7 @@ std::vector<std::string> check_drilled(const gcode::Interpretation& run, const a
     // each take one; a drilled hole left over is a hole drilled again.
     auto free = std::find_if(same_tool.begin(), same_tool.end(), [&](std::size_t m) { return !used[m]; });
     if (free == same_tool.end()) {
-      faults.push_back("hole " + at + " D" + gcode::format_number(h.diameter, 3) + " is not drilled (line " +
+      faults.push_back("hole " + at_text() + " D" + gcode::format_number(h.diameter, 3) + " is not drilled (line " +
                        std::to_string(run.holes[same_tool.front()].line) + " drills the hole beside it)");
       continue;
     }
@@ -119,13 +129,13 @@ std::vector<std::string> check_drilled(const gcode::Interpretation& run, const a
       const planning::OperationSpec& spec = operations[h.operation - 1];
       if (spec.kind == gcode::Operation::Tap && spec.pitch_mm > 0 && d.pitch_mm &&
           std::fabs(*d.pitch_mm - spec.pitch_mm) > 0.01 * spec.pitch_mm) {
-        faults.push_back("hole " + at + ": the tap (line " + std::to_string(d.line) + ") runs at " + gcode::format_short(*d.pitch_mm, 4) +
+        faults.push_back("hole " + at_text() + ": the tap (line " + std::to_string(d.line) + ") runs at " + gcode::format_short(*d.pitch_mm, 4) +
                          " mm a turn where the " + (spec.thread.empty() ? std::string("thread") : spec.thread) + "'s pitch is " +
                          gcode::format_short(spec.pitch_mm, 4) + " mm");
       }
     }
     const auto key = std::make_pair(std::llround(h.diameter * 1000.0), h.operation);
-    auto [it, inserted] = tool_of_diameter.emplace(key, d.tool);
+    auto [it, inserted] = tool_of_diameter.try_emplace(key, d.tool);  // (no node made when it is there)
     // Two tools for one diameter: sister tools (a worn drill replaced) when
     // the program names both with that diameter; otherwise a fault.
     const bool sisters = run.tool_diameter_mm.count(it->second) && run.tool_diameter_mm.count(d.tool);
