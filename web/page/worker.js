@@ -20,24 +20,36 @@ function cString(s) {
   return p;
 }
 
+// An answer of the job: its JSON, with the large parts the JSON only points
+// at ({"$f64": [address, count]}, "$i32", "$text": wasm_api.cpp) copied out of
+// the module's memory now, before the next call frees them.
 function answer(pointer) {
-  return JSON.parse(M.UTF8ToString(pointer));
+  const unpack = (v) => {
+    if (Array.isArray(v)) return v.map(unpack);
+    if (v === null || typeof v !== 'object') return v;
+    if (v.$f64) return M.HEAPF64.slice(v.$f64[0] / 8, v.$f64[0] / 8 + v.$f64[1]);
+    if (v.$i32) return M.HEAP32.slice(v.$i32[0] / 4, v.$i32[0] / 4 + v.$i32[1]);
+    if (v.$text) return M.UTF8ToString(v.$text[0], v.$text[1]);
+    for (const k of Object.keys(v)) v[k] = unpack(v[k]);
+    return v;
+  };
+  return unpack(JSON.parse(M.UTF8ToString(pointer)));
 }
 
-// The large lists of an answer as typed arrays, whose buffers are handed to
-// the page rather than copied number by number: a plain array of 3 x 10^5
-// numbers took the page's thread a task of over 100 ms to receive (issue 84).
+// The large lists of an answer (typed arrays, as answer() copies them out)
+// handed to the page with their buffers rather than copied number by number:
+// a plain array of 3 x 10^5 numbers took the page's thread a task of over
+// 100 ms to receive (issue 84).
 function packed(out) {
   const transfer = [];
-  const typed = (list, Type) => {
-    const a = Type.from(list);
-    transfer.push(a.buffer);
-    return a;
+  const typed = (list) => {
+    transfer.push(list.buffer);
+    return list;
   };
-  if (Array.isArray(out.holes)) out.holes = typed(out.holes, Float64Array);
-  for (const t of out.tools || []) t.holes = typed(t.holes, Int32Array);
+  if (out.holes) out.holes = typed(out.holes);
+  for (const t of out.tools || []) t.holes = typed(t.holes);
   for (const key of ['routes', 'input_routes']) {
-    if (Array.isArray(out[key])) out[key] = out[key].map((r) => typed(r, Int32Array));
+    if (Array.isArray(out[key])) out[key] = out[key].map(typed);
   }
   return { out, transfer };
 }

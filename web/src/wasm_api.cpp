@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <deque>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -24,10 +25,46 @@ struct Session {
   std::unique_ptr<job::PlanJob> job;
   json progress = json::array();  // the progress since the last slice
   std::string out;                // the last answer, alive until the next call
+  // The last answer's large parts, kept here (not written into its JSON) until
+  // the next call: the worker copies them out of memory by the places the JSON
+  // gives. At 10^6 holes, writing and parsing them as JSON text took 9 s of
+  // the page's 48 (issue 84).
+  // (Deques: a part never moves once made, so the addresses given stay true.)
+  std::deque<std::vector<double>> f64;
+  std::deque<std::vector<std::int32_t>> i32;
+  std::deque<std::string> texts;
 };
 Session& session() {
   static Session s;
   return s;
+}
+
+// Called first by every answering function: the previous answer's parts go.
+void new_answer() {
+  Session& s = session();
+  s.f64.clear();
+  s.i32.clear();
+  s.texts.clear();
+}
+
+// {"$f64": [address, count]}: numbers the worker reads as a Float64Array.
+json f64_part(std::vector<double> v) {
+  Session& s = session();
+  s.f64.push_back(std::move(v));
+  return {{"$f64", {reinterpret_cast<std::uintptr_t>(s.f64.back().data()), s.f64.back().size()}}};
+}
+// {"$i32": [address, count]}: hole indices, as an Int32Array.
+template <class Ints>
+json i32_part(const Ints& v) {
+  Session& s = session();
+  s.i32.emplace_back(v.begin(), v.end());
+  return {{"$i32", {reinterpret_cast<std::uintptr_t>(s.i32.back().data()), s.i32.back().size()}}};
+}
+// {"$text": [address, bytes]}: a file's text (UTF-8), as a string.
+json text_part(std::string text) {
+  Session& s = session();
+  s.texts.push_back(std::move(text));
+  return {{"$text", {reinterpret_cast<std::uintptr_t>(s.texts.back().data()), s.texts.back().size()}}};
 }
 
 const char* answer(const json& j) {
@@ -121,7 +158,8 @@ json stats_of(const planning::RouteStats& st) {
 // The holes as the page draws them: x, y, diameter flat, and each tool with its holes.
 json holes_of(const job::Result& r) {
   const aco::HoleSet& holes = r.holes.empty() ? r.inputs.holes.holes : r.holes;
-  json xyd = json::array();
+  std::vector<double> xyd;
+  xyd.reserve(holes.size() * 3);
   for (const aco::Hole& h : holes) {
     xyd.push_back(std::round(h.center.x * 1e4) / 1e4);
     xyd.push_back(std::round(h.center.y * 1e4) / 1e4);
@@ -134,7 +172,7 @@ json holes_of(const job::Result& r) {
                      {"diameter_mm", g.tool.diameter_mm},
                      {"end_mill", g.tool.end_mill},
                      {"operation", gcode::to_string(g.tool.operation)},
-                     {"holes", g.input_order}});
+                     {"holes", i32_part(g.input_order)}});
   }
   const bool program = r.inputs.holes.program != nullptr;
   if (program && r.plan.groups.empty()) {
@@ -152,7 +190,7 @@ json holes_of(const job::Result& r) {
                        {"diameter_mm", t.diameter_mm},
                        {"end_mill", false},
                        {"operation", "drill"},
-                       {"holes", at}});
+                       {"holes", i32_part(at)}});
     }
   }
   json inputs = json::array();
@@ -182,7 +220,7 @@ json holes_of(const job::Result& r) {
   }
   // A program's holes stay where it has them: their extent as they are.
   const planning::Extent e = program ? planning::extent_of(holes) : r.placement.extent;
-  return {{"holes", xyd},
+  return {{"holes", f64_part(std::move(xyd))},
           {"tools", tools},
           {"inputs", inputs},
           {"program_input", program},
@@ -206,6 +244,7 @@ EMSCRIPTEN_KEEPALIVE void aco_add_file(const char* name, const std::uint8_t* byt
 // Reads the files with the settings: the holes, their tools and what the
 // inputs say, or the error. The job then waits for aco_advance.
 EMSCRIPTEN_KEEPALIVE const char* aco_open(const char* settings_json) {
+  new_answer();
   Session& s = session();
   s.job.reset();
   s.progress = json::array();
@@ -236,6 +275,7 @@ EMSCRIPTEN_KEEPALIVE const char* aco_open(const char* settings_json) {
 // Routes for `seconds` (or `iterations`): whether the job is done, the
 // progress heard, and (when it changed and `with_routes`) each tool's route as it stands.
 EMSCRIPTEN_KEEPALIVE const char* aco_advance(int iterations, double seconds, int with_routes) {
+  new_answer();
   Session& s = session();
   if (!s.job) return answer({{"done", true}});
   const bool done = s.job->advance(iterations, seconds);
@@ -243,12 +283,17 @@ EMSCRIPTEN_KEEPALIVE const char* aco_advance(int iterations, double seconds, int
   bool improved = false;
   for (const json& p : s.progress) improved = improved || p["improved"].get<bool>();
   s.progress = json::array();
-  if (improved && !done && with_routes) out["routes"] = s.job->routes_so_far();
+  if (improved && !done && with_routes) {
+    json routes = json::array();
+    for (const aco::Order& o : s.job->routes_so_far()) routes.push_back(i32_part(o));
+    out["routes"] = routes;
+  }
   return answer(out);
 }
 
 // The outputs (the routing ends here if it has not): files, summary, or the error.
 EMSCRIPTEN_KEEPALIVE const char* aco_finish() {
+  new_answer();
   Session& s = session();
   if (!s.job) return answer({{"error", "no job"}, {"exit_code", 2}});
   job::Result r = s.job->finish();
@@ -256,12 +301,13 @@ EMSCRIPTEN_KEEPALIVE const char* aco_finish() {
   if (r.exit_code != 0) return answer(error_of(r));
   json routes = json::array(), input_routes = json::array();
   for (const planning::ToolGroup& g : r.plan.groups) {
-    routes.push_back(g.optimized);
-    input_routes.push_back(g.input_order);
+    routes.push_back(i32_part(g.optimized));
+    input_routes.push_back(i32_part(g.input_order));
   }
   json out = holes_of(r);
-  out["files"] = {{"program", r.files.program},     {"report", r.files.report},       {"setup_sheet", r.files.setup_sheet},
-                  {"route_svg", r.files.route_svg}, {"excellon", r.files.excellon}, {"gerber", r.files.gerber}};
+  out["files"] = {{"program", text_part(std::move(r.files.program))},     {"report", text_part(std::move(r.files.report))},
+                  {"setup_sheet", text_part(std::move(r.files.setup_sheet))}, {"route_svg", text_part(std::move(r.files.route_svg))},
+                  {"excellon", text_part(std::move(r.files.excellon))},   {"gerber", text_part(std::move(r.files.gerber))}};
   out["routes"] = routes;
   out["input_routes"] = input_routes;
   out["stopped"] = r.stopped;
