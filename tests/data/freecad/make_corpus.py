@@ -5,7 +5,8 @@ committed files):  freecadcmd tests/data/freecad/make_corpus.py
 (on FreeCAD 1.0 the Path workbench is CAM; this script is for 0.20's names).
 
 Each part is a plate of our own with holes; each Job drills them with
-FreeCAD's Drilling operation (a tool controller per diameter; G81, G82 with a
+FreeCAD's Drilling operation (and "milled" also profiles the plate between
+two drillings) (a tool controller per diameter; G81, G82 with a
 dwell, G83 with pecks; a stepped block an operation per height; G73 in a
 Custom operation), posted with each post into POST/PART.nc (a post that
 cannot post headless leaves PART.nc.failed with its traceback). FreeCAD's
@@ -25,6 +26,7 @@ sys.path.insert(0, "/usr/share/freecad/Mod/Path")
 
 import PathScripts.PathDrilling as PathDrilling  # noqa: E402
 import PathScripts.PathJob as PathJob  # noqa: E402
+import PathScripts.PathProfile as PathProfile  # noqa: E402
 import PathScripts.PathPost as PathPost  # noqa: E402
 import PathScripts.PathToolBit as PathToolBit  # noqa: E402
 import PathScripts.PathToolController as PathToolController  # noqa: E402
@@ -71,6 +73,28 @@ def tool_controller(job, number, diameter):
     tc.VertFeed = 100.0
     job.Proxy.addToolController(tc)
     return tc
+
+
+def end_mill(job, number, diameter):
+    bit = PathToolBit.Factory.Create("Endmill%g" % diameter, "/usr/share/freecad/Mod/Path/Tools/Shape/endmill.fcstd")
+    bit.Diameter = diameter
+    bit.addProperty("App::PropertyString", "ToolType")
+    bit.ToolType = "EndMill"
+    tc = PathToolController.Create("TC: %gmm Endmill" % diameter, bit, number)
+    tc.SpindleSpeed = 10000.0
+    tc.VertFeed = 100.0
+    tc.HorizFeed = 600.0
+    job.Proxy.addToolController(tc)
+    return tc
+
+
+def profile(doc, tc):
+    """A Profile operation round the whole part (its outline, from the top down), as a shop cuts a plate free."""
+    PathUtils.UserInput = ChosenTool(tc)
+    op = PathProfile.Create("Profile")
+    op.ToolController = tc
+    doc.recompute()
+    return op
 
 
 def drilling(doc, tc, cycle, where=None):
@@ -130,9 +154,12 @@ def own_holes(job, custom):
     return rows
 
 
-def make(name, size, holes, cycles, fixtures=("G54",), order="Operation", step=None, g73=None):
+def make(name, size, holes, cycles, fixtures=("G54",), order="Operation", step=None, g73=None, profile_after=None):
     """cycles: (diameter, cycle) a tool each; with step (x, depth), each tool drills the holes on
-    each height in an operation of its own; g73: holes a Custom op drills with G73 and the last tool."""
+    each height in an operation of its own; g73: holes a Custom op drills with G73 and the last tool;
+    profile_after: after that tool's drilling, a 6 mm end mill (T9) profiles the part."""
+    if PARTS and name not in PARTS:
+        return
     doc = App.newDocument(name)
     part = plate(doc, name, size, [(x, y, d) for x, y, d in holes], step)
     job = PathJob.Create("Job", [part], None)
@@ -146,6 +173,8 @@ def make(name, size, holes, cycles, fixtures=("G54",), order="Operation", step=N
             drilling(doc, tc, cycle, lambda c: c.x > step[0])
         else:
             drilling(doc, tc, cycle)
+        if profile_after == n:
+            profile(doc, end_mill(job, 9, 6.0))
     if g73:
         op = custom_g73(doc, tc, g73, size[2], 0.0)
         custom = op.Proxy.custom_holes
@@ -188,6 +217,10 @@ def make(name, size, holes, cycles, fixtures=("G54",), order="Operation", step=N
     App.closeDocument(name)
 
 
+# PARTS=milled,plate3 makes only those parts (each program names the time it was posted).
+PARTS = [p for p in os.environ.get("PARTS", "").split(",") if p]
+
+
 def grid(nx, ny, pitch, x0, y0, d):
     return [(x0 + i * pitch, y0 + j * pitch, d) for i in range(nx) for j in range(ny)]
 
@@ -213,3 +246,17 @@ def board333():
             holes.append((x, y, 1.0))
     return holes
 make("board333", (160, 100, 1.6), board333(), [(1.0, 81)], g73=[(20 + 20 * i, 97.5) for i in range(6)])
+# Issue 83: a Job that mills too. Holes of two sizes scattered over a plate (the same every run),
+# the first drilled with G81, then the plate profiled by an end mill, then the second drilled
+# with G83: acodrill plan --keep-milling reorders each drilling and keeps the profile as posted.
+def scattered():
+    holes, seed = [], 777
+    while len(holes) < 22:
+        seed = (seed * 1103515245 + 12345) % 2147483648
+        x = 8 + (seed % 1040) / 10.0
+        seed = (seed * 1103515245 + 12345) % 2147483648
+        y = 8 + (seed % 540) / 10.0
+        if all((x - a) ** 2 + (y - b) ** 2 > 100 for a, b, _ in holes):
+            holes.append((x, y, 3.5 if len(holes) < 14 else 6.6))
+    return holes
+make("milled", (120, 70, 8), scattered(), [(3.5, 81), (6.6, 83)], profile_after=1)
