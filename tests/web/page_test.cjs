@@ -184,6 +184,14 @@ async function fresh(context) {
   await page.waitForFunction(() => !document.getElementById('error').hidden, null, { timeout: 30000 });
   const error = await page.getByRole('alert', { name: 'Error' }).textContent();
   check(/^acodrill: error: bad\.csv:3: /.test(error), 'a bad file is one line in Error: ' + error);
+  // More holes than the page's memory takes (issue 84): refused at reading, in one line that says so.
+  const huge = path.join(work, 'huge.csv');
+  fs.writeFileSync(huge, '1,1\n'.repeat(2000001));
+  await page.getByLabel('Input files', { exact: true }).setInputFiles(huge);
+  await page.waitForFunction(() => /huge\.csv/.test(document.getElementById('error').textContent), null, { timeout: 120000 });
+  const said = await page.getByRole('alert', { name: 'Error' }).textContent();
+  check(/^acodrill: error: huge\.csv:2000001: more than 2000000 holes \(the most this page plans in a browser's memory; the command line, acodrill plan, takes up to 5000000\)$/.test(said),
+        'a job larger than the page plans is refused at reading, in one line: ' + said);
   await page.getByLabel('Input files', { exact: true }).setInputFiles(plate);
   await fill(page, { Iterations: '40', Seed: '3' });
   saved = await planAndSave(page);

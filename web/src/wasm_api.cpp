@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <deque>
 #include <memory>
+#include <new>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -33,7 +34,27 @@ struct Session {
   std::deque<std::vector<double>> f64;
   std::deque<std::vector<std::int32_t>> i32;
   std::deque<std::string> texts;
+  std::string failure;  // what ended the job inside a slice (its memory ran out): aco_finish says it
 };
+
+// The most holes the page takes (issue 84): at 10^6 random holes its memory
+// (the module's heap) reached 1.05 GB, and a browser gives it 4 GB at most; a
+// 3 x 10^6-hole file once failed after minutes with a bare number.
+constexpr std::size_t kPageMaxHoles = 2'000'000;
+const char* const kOutOfMemory =
+    "the job needs more memory than the browser gives this page: plan it with the command line (acodrill plan)";
+
+// The command line's hole limit, as the page has it.
+std::string in_page_terms(std::string message) {
+  const std::string most = "the most this page plans in a browser's memory; the command line, acodrill plan, takes up to 5000000";
+  for (const auto& [limit, said] : {std::pair{std::string("(the hole limit, --max-holes)"), "(" + most + ")"},
+                                    {"the hole limit (--max-holes " + std::to_string(kPageMaxHoles) + ")",
+                                     std::to_string(kPageMaxHoles) + " holes (" + most + ")"}}) {
+    const std::size_t at = message.find(limit);
+    if (at != std::string::npos) message.replace(at, limit.size(), said);
+  }
+  return message;
+}
 Session& session() {
   static Session s;
   return s;
@@ -141,10 +162,11 @@ job::PlanSettings settings_of(const json& j) {
   s.solver.beta = number("beta");
   s.solver.threads = 1;  // no threads in a file:// page (no cross-origin isolation)
   s.wanted = job::Wanted::all();
+  s.input.max_holes = kPageMaxHoles;
   return s;
 }
 
-json error_of(const job::Result& r) { return {{"error", r.error}, {"exit_code", r.exit_code}}; }
+json error_of(const job::Result& r) { return {{"error", in_page_terms(r.error)}, {"exit_code", r.exit_code}}; }
 
 json stats_of(const planning::RouteStats& st) {
   return {{"travel_mm", st.travel_mm},
@@ -247,6 +269,7 @@ EMSCRIPTEN_KEEPALIVE const char* aco_open(const char* settings_json) {
   new_answer();
   Session& s = session();
   s.job.reset();
+  s.failure.clear();
   s.progress = json::array();
   std::vector<job::InputFile> files = std::move(s.files);
   s.files.clear();
@@ -263,7 +286,10 @@ EMSCRIPTEN_KEEPALIVE const char* aco_open(const char* settings_json) {
                                     {"improved", p.improved}});
     });
   } catch (const formats::InputError& e) {
-    return answer({{"error", e.where_what()}, {"exit_code", 2}});
+    return answer({{"error", in_page_terms(e.where_what())}, {"exit_code", 2}});
+  } catch (const std::bad_alloc&) {
+    s.job.reset();
+    return answer({{"error", kOutOfMemory}, {"exit_code", 2}});
   } catch (const std::exception& e) {
     return answer({{"error", e.what()}, {"exit_code", 2}});
   }
@@ -278,7 +304,14 @@ EMSCRIPTEN_KEEPALIVE const char* aco_advance(int iterations, double seconds, int
   new_answer();
   Session& s = session();
   if (!s.job) return answer({{"done", true}});
-  const bool done = s.job->advance(iterations, seconds);
+  bool done = false;
+  try {
+    done = s.job->advance(iterations, seconds);
+  } catch (const std::bad_alloc&) {
+    s.job.reset();
+    s.failure = kOutOfMemory;
+    return answer({{"done", true}});
+  }
   json out = {{"done", done}, {"progress", s.progress}};
   bool improved = false;
   for (const json& p : s.progress) improved = improved || p["improved"].get<bool>();
@@ -295,8 +328,19 @@ EMSCRIPTEN_KEEPALIVE const char* aco_advance(int iterations, double seconds, int
 EMSCRIPTEN_KEEPALIVE const char* aco_finish() {
   new_answer();
   Session& s = session();
+  if (!s.failure.empty()) {
+    const std::string failure = std::move(s.failure);
+    s.failure.clear();
+    return answer({{"error", failure}, {"exit_code", 2}});
+  }
   if (!s.job) return answer({{"error", "no job"}, {"exit_code", 2}});
-  job::Result r = s.job->finish();
+  job::Result r;
+  try {
+    r = s.job->finish();
+  } catch (const std::bad_alloc&) {
+    s.job.reset();
+    return answer({{"error", kOutOfMemory}, {"exit_code", 2}});
+  }
   s.job.reset();
   if (r.exit_code != 0) return answer(error_of(r));
   json routes = json::array(), input_routes = json::array();
