@@ -212,10 +212,10 @@ int main(int argc, char** argv) {
                      "expanded; line numbers renumbered), rewriting only where its holes are drilled. The default "
                      "for a program unless --dialect (or --units) is given");
   plan_cmd->add_flag("--keep-milling", in_args.settings.keep_milling,
-                     "Program input that also mills (a FreeCAD Job with a profile or pocket): its milling lines (G1 in "
-                     "X/Y at or below the top of the part, arcs, cutter compensation) stay as written and where they "
-                     "are, and only the drilling between them is reordered, in the input's own style. Without it such "
-                     "a program is refused at its first cutting line");
+                     "Program input that also mills (a FreeCAD Job with a profile or pocket): its cuts (a G1 in X/Y "
+                     "anywhere but at the height where the last hole's feed began, arcs, cutter compensation) stay as "
+                     "written and where they are, and only the drilling between them is reordered, in the input's own "
+                     "style. Without it such a program is refused at its first cut");
   plan_cmd->add_option("--min-spacing", ps.min_spacing_mm,
                        "Program input: holes of a tool closer than MM (or than the drill, where the program names "
                        "its diameter) overlap and are drilled together in their input order (default 0)")

@@ -225,6 +225,21 @@ def grid(nx, ny, pitch, x0, y0, d):
     return [(x0 + i * pitch, y0 + j * pitch, d) for i in range(nx) for j in range(ny)]
 
 
+def scattered(count, seed, x_tenths, y_tenths, origin, gap, diameter):
+    """count holes placed pseudo-randomly (an LCG, the same every run) on a grid of 0.1 mm:
+    x, y = origin + (0 .. x_tenths, 0 .. y_tenths) / 10, none closer than gap to another;
+    diameter(k) the k-th hole's."""
+    holes = []
+    while len(holes) < count:
+        seed = (seed * 1103515245 + 12345) % 2147483648
+        x = origin + (seed % x_tenths) / 10.0
+        seed = (seed * 1103515245 + 12345) % 2147483648
+        y = origin + (seed % y_tenths) / 10.0
+        if all((x - a) ** 2 + (y - b) ** 2 > gap * gap for a, b, _ in holes):
+            holes.append((x, y, diameter(len(holes))))
+    return holes
+
+
 # A plate with 3 diameters and 3 cycles.
 make("plate3", (120, 80, 10), grid(5, 2, 20, 10, 10, 3.5) + grid(4, 2, 22, 15, 45, 6.6) + [(100, 40, 10), (100, 65, 10)],
      [(3.5, 81), (6.6, 82), (10.0, 83)])
@@ -233,30 +248,10 @@ make("fixtures2", (120, 80, 10), grid(5, 2, 20, 10, 10, 3.5) + grid(4, 2, 22, 15
      [(3.5, 81), (6.6, 83)], fixtures=("G54", "G55"), order="Tool")
 # A block with a step: holes on its top (Z 20) and on the step (Z 10), an operation per height.
 make("stepped", (100, 60, 20), grid(3, 2, 15, 10, 15, 5.0) + grid(3, 2, 15, 60, 15, 5.0), [(5.0, 81)], step=(50, 10))
-# A board of 333 holes of 1 mm, placed as a pseudo-random pattern (the same every run), and a
+# A board of 333 holes of 1 mm, placed as a pseudo-random pattern, and a
 # Custom operation drilling six more with G73.
-def board333():
-    holes, seed = [], 12345
-    while len(holes) < 333:
-        seed = (seed * 1103515245 + 12345) % 2147483648
-        x = 5 + (seed % 1500) / 10.0
-        seed = (seed * 1103515245 + 12345) % 2147483648
-        y = 5 + (seed % 900) / 10.0
-        if all((x - a) ** 2 + (y - b) ** 2 > 9 for a, b, _ in holes):
-            holes.append((x, y, 1.0))
-    return holes
-make("board333", (160, 100, 1.6), board333(), [(1.0, 81)], g73=[(20 + 20 * i, 97.5) for i in range(6)])
-# Issue 83: a Job that mills too. Holes of two sizes scattered over a plate (the same every run),
-# the first drilled with G81, then the plate profiled by an end mill, then the second drilled
-# with G83: acodrill plan --keep-milling reorders each drilling and keeps the profile as posted.
-def scattered():
-    holes, seed = [], 777
-    while len(holes) < 22:
-        seed = (seed * 1103515245 + 12345) % 2147483648
-        x = 8 + (seed % 1040) / 10.0
-        seed = (seed * 1103515245 + 12345) % 2147483648
-        y = 8 + (seed % 540) / 10.0
-        if all((x - a) ** 2 + (y - b) ** 2 > 100 for a, b, _ in holes):
-            holes.append((x, y, 3.5 if len(holes) < 14 else 6.6))
-    return holes
-make("milled", (120, 70, 8), scattered(), [(3.5, 81), (6.6, 83)], profile_after=1)
+make("board333", (160, 100, 1.6), scattered(333, 12345, 1500, 900, 5, 3, lambda k: 1.0), [(1.0, 81)], g73=[(20 + 20 * i, 97.5) for i in range(6)])
+# Issue 83: a Job that mills too. Holes of two sizes scattered over a plate, the first drilled
+# with G81, then the plate profiled by an end mill, then the second drilled with G83:
+# acodrill plan --keep-milling reorders each drilling and keeps the profile as posted.
+make("milled", (120, 70, 8), scattered(22, 777, 1040, 540, 8, 10, lambda k: 3.5 if k < 14 else 6.6), [(3.5, 81), (6.6, 83)], profile_after=1)
