@@ -478,6 +478,37 @@ TEST(FreeCadPrograms, MillingIsKeptAsWrittenAndTheDrillingReorderedAroundIt) {
   EXPECT_THAT(verified.out, ::testing::HasSubstr("holes 10\n"));
 }
 
+// A cut that follows the last hole with no rapid in X/Y between begins where
+// that hole left the spindle: the reordered run goes back there before it.
+TEST(FreeCadPrograms, ACutRightAfterTheLastHoleBeginsWhereTheInputsLastHoleLeftTheSpindle) {
+  const std::string job =
+      "G21 G90\n"
+      "T1 M6\n"
+      "M3 S3000\n"
+      "G0 Z12\n"
+      "G0 X10 Y10\n"
+      "G1 Z0 F100\n"
+      "G0 Z12\n"
+      "G0 X50 Y10\n"
+      "G1 Z0 F100\n"
+      "G0 Z12\n"
+      "G0 X30 Y40\n"
+      "G1 Z0 F100\n"
+      "G0 Z12\n"
+      "G0 X31 Y11\n"
+      "G1 Z0 F100\n"
+      "G0 Z12\n"
+      "G1 X40 Y11 Z6 F300\n"  // a ramp into a slot, from over the last hole
+      "G0 Z12\n"
+      "M5\n"
+      "M30\n";
+  const Canon in = milling_canon(job);
+  const std::string out = plan(job, "--keep-milling");
+  const Canon got = milling_canon(out);
+  EXPECT_EQ(stretches(got.events), stretches(in.events)) << out;
+  EXPECT_NE(got.events, in.events) << "nothing was reordered";
+}
+
 }  // namespace
 
 // The corpus (tests/data/freecad/make_corpus.py): real Jobs made headless by

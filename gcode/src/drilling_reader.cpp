@@ -409,7 +409,10 @@ class Reader {
   // keep_milling: the feed down this cut goes on from was its plunge, not a
   // hole (a hole is only what the spindle leaves at the XY it went down at).
   void drop_plunge() {
-    if (!hole_.open || hole_.out) return;
+    if (!hole_.open || hole_.out) {
+      note_cut_follows();
+      return;
+    }
     std::vector<ToolRun>& runs = out_.runs;
     runs[hole_.run].holes.erase(runs[hole_.run].holes.begin() + static_cast<std::ptrdiff_t>(hole_.index));
     if (runs[hole_.run].holes.empty() && hole_.run + 1 == runs.size()) {
@@ -420,6 +423,13 @@ class Reader {
       if (runs.empty()) holes_seen_ = false;
     }
     hole_ = OpenHole{};
+    moved_since_hole_ = moved_before_plunge_;  // as the last hole left it
+    note_cut_follows();
+  }
+
+  // A cut with no rapid in X/Y since the last hole begins where that hole left the spindle.
+  void note_cut_follows() {
+    if (!moved_since_hole_ && !out_.runs.empty() && !out_.runs.back().holes.empty()) out_.runs.back().cut_follows = true;
   }
 
   void block(const std::vector<Word>& words) {
@@ -721,6 +731,7 @@ class Reader {
   void rapid_to(aco::Point2 to) {
     const double d = aco::euclidean(xy_, to);
     if (d <= kTiny) return;
+    moved_since_hole_ = true;
     out_.rapid_xy_mm += d;
     close_hole();
     xy_ = to;
@@ -733,6 +744,8 @@ class Reader {
     ProgramHole& h = out_.runs[hole_.run].holes[hole_.index];
     h.cycle.moves.push_back(m);
     h.last_line = lineno_;
+    if (m.kind != ZMove::Dwell) h.leave_z_mm = m.z_mm;
+    moved_since_hole_ = false;
   }
 
   void move(aco::Point2 to, std::optional<double> wz) {
@@ -770,6 +783,7 @@ class Reader {
         arrive_z_ = z_;
         approach_.clear();
         if (nz) z_ = nz;
+        if (options_.keep_milling) arrive_z_ = z_;  // where the cut left the spindle, over the next hole
         return;
       }
       if (nz && (!z_ || *nz > *z_)) z_ = nz;
@@ -808,6 +822,7 @@ class Reader {
         hole_.out = false;
       } else {
         no_feed("G1 down in Z");
+        moved_before_plunge_ = moved_since_hole_;
         ToolRun& run = current_run();
         ProgramHole h;
         h.at = xy_;
@@ -932,8 +947,10 @@ class Reader {
     h.line = lineno_;
     h.first_line = !moved && arrived_on && arrived_on >= last_hole_line_ ? arrived_on : lineno_;
     h.last_line = lineno_;
+    h.leave_z_mm = start;
     run.holes.push_back(std::move(h));
     last_hole_line_ = lineno_;
+    moved_since_hole_ = false;
     arrive_z_ = start;
     arrive_line_ = 0;
     approach_.clear();
@@ -1004,9 +1021,11 @@ class Reader {
     // A rapid to this very XY just before the cycle (FreeCAD: "G0 X Y" then "G83 X Y ...") belongs to the hole.
     h.first_line = !moved && arrived_on && arrived_on >= last_hole_line_ ? arrived_on : lineno_;
     h.last_line = lineno_;
+    const double clear = retract_initial_ ? std::max(initial_z_.value_or(cycle_.r_mm), cycle_.r_mm) : cycle_.r_mm;
+    h.leave_z_mm = clear;
     run.holes.push_back(std::move(h));
     last_hole_line_ = lineno_;
-    const double clear = retract_initial_ ? std::max(initial_z_.value_or(cycle_.r_mm), cycle_.r_mm) : cycle_.r_mm;
+    moved_since_hole_ = false;
     z_ = clear;
     arrive_z_ = clear;
     arrive_line_ = 0;
@@ -1038,6 +1057,8 @@ class Reader {
   bool wx_given_ = false, wy_given_ = false;  // the block being run has X / Y words
   bool t_words_seen_ = false;
   bool told_no_feed_ = false;
+  bool moved_since_hole_ = false;  // a rapid in X/Y since the last hole was made (keep_milling: cut_follows)
+  bool moved_before_plunge_ = false;  // the same before the hole now open began (a plunge, if a cut follows)
   bool z_homed_ = false;  // z_ unknown means at machine Z home (G28/G53 Z), not "never said"
   std::string ended_by_;
   // The Z where the last hole's feed began: the spindle is above the part

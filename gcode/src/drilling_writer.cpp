@@ -415,6 +415,15 @@ void write_keep_style(std::ostream& out, const DrillingProgram& p, const Drillin
       // stretch back the mode they ran in.
       if (any_incremental) w.prefix_next("G90 ");
       w.holes(*sp.run, std::nullopt, false, last->cycle.code == 0);
+      if (sp.run->cut_follows && last->leave_z_mm) {
+        // A cut follows the input's last hole from where it left the spindle
+        // (keep_milling): back there, over the run's travel plane.
+        const Travel travel = travel_of(*sp.run);
+        if (any_incremental) w.prefix_next("G90 ");
+        w.line(std::string(w.rapid()) + " Z" + w.n(std::max(travel.z_mm, *last->leave_z_mm)));
+        w.line(std::string(w.rapid()) + " X" + w.n(last->at.x) + " Y" + w.n(last->at.y));
+        if (*last->leave_z_mm < travel.z_mm) w.line(std::string(w.rapid()) + " Z" + w.n(*last->leave_z_mm));
+      }
       if (p.incremental_after(sp.last)) body << "G91\n";
       no = sp.last;
       continue;

@@ -98,6 +98,8 @@ struct ProgramHole {
   // Milled by arcs about `at` (lenient reading only): the radius of the
   // tool's centre path; the hole is that twice, plus the tool's diameter.
   std::optional<double> milled_radius_mm;
+  // Z of the spindle after last_line: where the hole leaves it (a cycle's retract, an expanded hole's last move).
+  std::optional<double> leave_z_mm;
 };
 
 // A work offset as ToolRun::work_offset holds it: 54..59 (G54-G59), 591..593
@@ -117,6 +119,10 @@ struct ToolRun {
   int work_offset = 54;                  // the work offset in force (work_offset_text)
   int length_offset = 0;                 // H of the G43 in force (0: none)
   int coolant = 0;                       // 7 (M7), 8 (M8) or 0 (off)
+  // ReadOptions::keep_milling: a cut follows the run's last hole (in program
+  // order) with no rapid in X/Y between, so it begins where that hole left the
+  // spindle; a reordered run returns there (write_drilling).
+  bool cut_follows = false;
   std::vector<ProgramHole> holes;
 };
 
