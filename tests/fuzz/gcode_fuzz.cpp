@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <sstream>
 #include <string>
+#include <vector>
 #include <stdexcept>
 
 #include "fuzz_targets.h"
@@ -53,16 +54,35 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
   } catch (const gcode::ProgramError&) {
   }
-  // A program that also mills (plan --keep-milling): in its own style, read
-  // back the same way, every line that milled is still there.
+  // A program that also mills (plan --keep-milling): in its own style every
+  // line that milled is still there, as written (a program the writer leaves
+  // without line numbers: renumbering rewrites every line). Whether a line
+  // after a rewritten stretch reads as a cut can change with the new order
+  // (a G1 in X/Y is travel at the height the last hole's feed began), so
+  // the reading back is not compared.
   try {
     gcode::ReadOptions keeping;
     keeping.keep_milling = true;
     const gcode::DrillingProgram p = gcode::read_drilling(text, keeping);
     gcode::DrillingWriteSettings s;
     s.keep_style = true;
-    const gcode::DrillingProgram back = gcode::read_drilling(written(p, s), keeping);
-    if (!p.milling_lines.empty() && back.milling_lines.size() != p.milling_lines.size()) std::abort();
+    const std::string out = written(p, s);
+    gcode::read_drilling(out, keeping);
+    if (!p.uses_line_numbers) {
+      std::vector<std::string_view> lines;
+      for (std::size_t at = 0; at <= text.size();) {
+        std::size_t nl = text.find('\n', at);
+        if (nl == std::string_view::npos) nl = text.size();
+        lines.push_back(text.substr(at, nl - at));
+        at = nl + 1;
+      }
+      for (std::uint32_t line : p.milling_lines) {
+        std::string_view raw = lines.at(line - 1);
+        if (!raw.empty() && raw.back() == '\r') raw.remove_suffix(1);
+        if (line == 1 && raw.substr(0, 3) == "\xEF\xBB\xBF") raw.remove_prefix(3);  // (a byte-order mark the writer drops)
+        if (out.find(raw) == std::string::npos) std::abort();
+      }
+    }
   } catch (const gcode::ProgramError&) {
   }
   return 0;
