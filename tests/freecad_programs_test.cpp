@@ -640,6 +640,22 @@ TEST(FreeCadPrograms, EveryPostsJobThatMillsKeepsItsMillingAndDrillsFreeCadsHole
   EXPECT_GE(read_by_rs274, 5u);
 }
 
+// FreeCAD's marlin and rrf posts move to each hole twice ("G0 X Y", "G0 Z",
+// a comment, "G0 X Y"): the hole's lines begin at the first, so no run's first
+// hole in the input is visited on the way, before the reordered run begins.
+TEST(FreeCadPrograms, AHoleMovedToTwiceIsVisitedOnce) {
+  for (const char* post : {"marlin", "rrf"}) {
+    const std::string out = plan(testutil::slurp(testutil::data(std::string("freecad/") + post + "/plate3.nc")), "");
+    std::map<std::string, int> visits;
+    std::istringstream in(out);
+    for (std::string line; std::getline(in, line);) {
+      if (line.rfind("G0 X", 0) == 0) ++visits[line];
+    }
+    ASSERT_EQ(visits.size(), 19u) << post << "\n" << out;  // plate3's 19 holes
+    for (const auto& [move, count] : visits) EXPECT_EQ(count, 1) << post << ": " << move;
+  }
+}
+
 TEST(FreeCadPrograms, PostsThatWriteNoGcodeAreNamedInOneLine) {
   testutil::TempDir t;
   for (const auto& [post, says] : {std::pair{"opensbp", "an OpenSBP (ShopBot) part file, not G-code"},

@@ -744,6 +744,7 @@ class Reader {
     ProgramHole& h = out_.runs[hole_.run].holes[hole_.index];
     h.cycle.moves.push_back(m);
     h.last_line = lineno_;
+    last_hole_line_ = lineno_;
     if (m.kind != ZMove::Dwell) h.leave_z_mm = m.z_mm;
     moved_since_hole_ = false;
   }
@@ -797,9 +798,14 @@ class Reader {
     if (d <= kTiny && (wx_given_ || wy_given_)) {
       // A rapid to where the spindle is ends the hole here: the next feed down
       // is another hole at the same place (drilled twice), not a deeper peck.
+      const bool hole_here = hole_.open;
       close_hole();
       arrive_z_ = z_;
-      arrive_line_ = lineno_;
+      // With no hole made since the spindle came here, the hole's lines begin
+      // where it came: FreeCAD's marlin and rrf posts move to each hole twice
+      // ("G0 X Y", "G0 Z", a comment, "G0 X Y"), and a first move kept as
+      // written would send the reordered program there first.
+      if (hole_here || arrive_line_ == 0 || arrive_line_ <= last_hole_line_) arrive_line_ = lineno_;
       approach_.clear();
     }
     if (d > kTiny) {
