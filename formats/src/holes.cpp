@@ -199,10 +199,8 @@ std::optional<InputFormat> format_by_content(std::string_view data) {
   return std::nullopt;
 }
 
-}  // namespace
-
-InputFormat detect_format(const std::string& path, std::string_view data) {
-  if (const auto by_content = format_by_content(data)) return *by_content;
+// The format a file's name says (CSV when it says none).
+InputFormat format_by_name(const std::string& path) {
   const std::string ext = lower_ext(path);
   if (ext == "dxf") return InputFormat::Dxf;
   if (ext == "tsp") return InputFormat::Tsplib;
@@ -210,6 +208,13 @@ InputFormat detect_format(const std::string& path, std::string_view data) {
   if (ext == "gbr" || ext == "ger" || ext == "pho" || ext == "gtl") return InputFormat::Gerber;
   if (ext == "drl" || ext == "drd" || ext == "xln" || ext == "exc" || ext == "ncd") return InputFormat::Excellon;
   return InputFormat::Csv;
+}
+
+}  // namespace
+
+InputFormat detect_format(const std::string& path, std::string_view data) {
+  if (const auto by_content = format_by_content(data)) return *by_content;
+  return format_by_name(path);
 }
 
 namespace {
@@ -318,9 +323,10 @@ void refuse_other_machine_files(const std::string& path, std::string_view data) 
   }
 }
 
-LoadedHoles parse_holes_as(const std::string& path, const std::string& shown, std::string_view data, const InputOptions& options) {
+LoadedHoles parse_holes_as(InputFormat format, const std::string& path, const std::string& shown, std::string_view data,
+                           const InputOptions& options) {
   LoadedHoles out;
-  switch (detect_format(path, data)) {
+  switch (format) {
     case InputFormat::Ipc2581:
     case InputFormat::Odb: {
       // One list of every source's holes (`acodrill holes`); plan reads them apart (parse_sources).
@@ -390,9 +396,8 @@ LoadedHoles parse_holes_as(const std::string& path, const std::string& shown, st
       check_text(shown, data);
       out = parse_tsplib(shown, data);
       break;
-    case InputFormat::Csv:
+    case InputFormat::Csv:  // (nothing in it shows a format: parse_holes refused other machines' files)
       check_text(shown, data);
-      refuse_other_machine_files(shown, data);
       out = parse_csv(shown, data, options);
       break;
     case InputFormat::Program:
@@ -426,16 +431,18 @@ LoadedHoles parse_holes(const std::string& path, std::string_view data, const In
   refuse_known_binary(shown, data);
   // Taken for Excellon or CSV by its name alone (nothing in it looked like
   // any format): a file that fails at once is most likely none of them.
-  if (!format_by_content(data) && lower_ext(path) != "csv") {
-    refuse_other_machine_files(shown, data);
+  if (const auto by_content = format_by_content(data)) return parse_holes_as(*by_content, path, shown, data, options);
+  refuse_other_machine_files(shown, data);
+  const InputFormat by_name = format_by_name(path);
+  if (lower_ext(path) != "csv") {
     try {
-      return parse_holes_as(path, shown, data, options);
+      return parse_holes_as(by_name, path, shown, data, options);
     } catch (const InputError& e) {
       if (e.line() == 0 || e.line() > first_code_line(data)) throw;
       throw InputError(e.file(), e.line(), std::string(e.what()) + ": not a hole file acodrill recognises (" + kFormatsRead + ")");
     }
   }
-  return parse_holes_as(path, shown, data, options);
+  return parse_holes_as(by_name, path, shown, data, options);
 }
 
 }  // namespace formats

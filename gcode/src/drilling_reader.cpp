@@ -392,7 +392,6 @@ class Reader {
   void cutting(const std::string& what) {
     if (!options_.drilling_only) return;
     if (!options_.keep_milling) refuse(what);
-    if (out_.milling_lines.empty()) out_.first_milling = what;
     if (out_.milling_lines.empty() || out_.milling_lines.back() != lineno_) out_.milling_lines.push_back(lineno_);
     boundary_ = true;
   }
@@ -781,10 +780,9 @@ class Reader {
         }
         close_hole();
         xy_ = to;
-        arrive_z_ = z_;
         approach_.clear();
         if (nz) z_ = nz;
-        if (options_.keep_milling) arrive_z_ = z_;  // where the cut left the spindle, over the next hole
+        arrive_z_ = z_;  // where the cut left the spindle, over the next hole
         return;
       }
       if (nz && (!z_ || *nz > *z_)) z_ = nz;
@@ -860,29 +858,24 @@ class Reader {
     if (*nz >= hole_.feed_start_z - kTiny) hole_.out = true;  // out of the hole: the rest is travel
   }
 
-  // An arc (lenient reading only: a drilling program refuses them). Arcs
-  // that go on from a feed down where a hole was opened, all about one
-  // centre, mill that hole: it is made about the arc's centre, to the depth
-  // the helix reaches, `milled_radius_mm` from it. Any other arc is read past.
+  // An arc (a drilling program refuses them, or keeps them as milling). Read
+  // leniently, arcs that go on from a feed down where a hole was opened, all
+  // about one centre, mill that hole: it is made about the arc's centre, to
+  // the depth the helix reaches, `milled_radius_mm` from it. Any other arc is
+  // read past.
   void arc(aco::Point2 to, std::optional<double> wz, aco::Point2 ij) {
     std::optional<double> nz;
     if (wz) nz = absolute_ ? *wz : z_.value_or(0.0) + *wz;
     if (options_.keep_milling) {
-      // Milling kept as written (a helix too): the spindle ends where the arc does.
+      // Milling kept as written (a helix too), read past as any other arc.
       cutting("an arc");  // (a modal arc's line, after the G2/G3 that began them)
       drop_plunge();
-      close_hole();
-      xy_ = to;
       arrive_line_ = 0;
-      arrive_z_ = nz ? nz : z_;
-      approach_.clear();
-      if (nz) z_ = nz;
-      return;
     }
     const aco::Point2 centre{xy_.x + ij.x, xy_.y + ij.y};
     const double radius = std::hypot(ij.x, ij.y);
     bool helix = false;
-    if (hole_.open && !hole_.out && radius > kTiny) {
+    if (!options_.keep_milling && hole_.open && !hole_.out && radius > kTiny) {
       std::vector<ProgramHole>& run = out_.runs[hole_.run].holes;
       ProgramHole& h = run[hole_.index];
       if (!h.milled_radius_mm) {

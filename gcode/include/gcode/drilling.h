@@ -150,10 +150,9 @@ struct DrillingProgram {
     std::string message;
   };
   std::vector<Note> notes;
-  // ReadOptions::keep_milling: the lines that cut (G1 in X/Y at or below the
-  // top of the part, arcs, G41/G42), in order; the first says what it is.
+  // ReadOptions::keep_milling: the lines that cut (a G1 in X/Y below where
+  // the last hole's feed began, arcs, G41/G42), in order.
   std::vector<std::uint32_t> milling_lines;
-  std::string first_milling;               // e.g. "an arc (G2)"
   std::string text;                      // the program as read: what keep-style copies
   double rapid_xy_mm = 0.0;              // XY length of rapid moves, from X0 Y0
   std::size_t tool_changes = 0;
@@ -166,8 +165,8 @@ struct ReadOptions {
   // they are read past (verify lists what a program drills, whatever else it does).
   bool drilling_only = true;
   // With drilling_only: a program that also mills (FreeCAD Jobs with a
-  // profile or pocket beside their drilling). Its cutting moves — G1 in X/Y
-  // at or below the top of the part, arcs, cutter compensation — are not
+  // profile or pocket beside their drilling). Its cutting moves — a G1 in X/Y
+  // below where the last hole's feed began, arcs, cutter compensation — are not
   // refused but kept where they are (DrillingProgram::milling): each ends
   // the tool run it is in, so reordering stays between them, and the feed
   // down it began from (a plunge) is not a hole. Only the input's own style
