@@ -319,14 +319,23 @@ bool taps_by_g33_1(const Tool& t, Dialect d) {
   return d == Dialect::LinuxCnc && t.spindle_synchronized && is_tapping(t.cycle) && !t.end_mill;
 }
 
-std::string format_number(double value, int decimals) {
+void append_number(std::string& out, double value, int decimals) {
   char buf[64];
   auto res = aco::to_chars(buf, buf + sizeof buf, value, std::chars_format::fixed, decimals);
-  if (res.ec != std::errc()) return "0.";
-  std::string s(buf, res.ptr);
-  if (decimals == 0) s += '.';
+  if (res.ec != std::errc()) {
+    out += "0.";
+    return;
+  }
+  const char* begin = buf;
   // "-0.000" is a rounding artefact; a machinist should never read it.
-  if (s[0] == '-' && s.find_first_not_of("-0.") == std::string::npos) s.erase(0, 1);
+  if (buf[0] == '-' && std::all_of(buf + 1, res.ptr, [](char c) { return c == '0' || c == '.'; })) ++begin;
+  out.append(begin, static_cast<std::size_t>(res.ptr - begin));
+  if (decimals == 0) out += '.';
+}
+
+std::string format_number(double value, int decimals) {
+  std::string s;
+  append_number(s, value, decimals);
   return s;
 }
 

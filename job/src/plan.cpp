@@ -80,7 +80,7 @@ void make_outputs(Result& r, const PlanSettings& s, const planning::PlanOptions&
   if (w.convergence) r.files.convergence = convergence_csv(r.plan);
   if (w.route_svg) r.files.route_svg = route_svg(r.holes, r.plan, o, placement, ctx.name);
   if (w.compare_svg) r.files.compare_svg = compare_svg(r.holes, r.plan, o, placement, ctx.name);
-  if (w.setup_sheet) r.files.setup_sheet = setup_sheet_html(r.holes, r.plan, o, ctx);
+  if (w.setup_sheet) r.files.setup_sheet = setup_sheet_html(r.holes, r.plan, o, ctx, r.files.route_svg);
   if (w.excellon) {
     // The input's own units when it is Excellon, unless --units chose others.
     const bool metric = s.units.empty() ? ctx.input->metric.value_or(true) : o.program.units == gcode::Units::Mm;

@@ -21,7 +21,7 @@ std::string minutes(double seconds) { return gcode::format_number(seconds / 60.0
 }  // namespace
 
 std::string setup_sheet_html(const aco::HoleSet& holes, const PlanResult& plan, const PlanOptions& options,
-                             const ReportContext& ctx) {
+                             const ReportContext& ctx, std::string svg) {
   const gcode::ProgramSettings& ps = options.program;
   const bool inch = ps.units == gcode::Units::Inch;
   const std::string unit = inch ? "in" : "mm";
@@ -160,7 +160,7 @@ std::string setup_sheet_html(const aco::HoleSet& holes, const PlanResult& plan, 
   }
 
   // The route picture, to scale, in program coordinates with program zero marked.
-  std::string svg = route_svg(holes, plan, options, pl, ctx.name);
+  if (svg.empty()) svg = route_svg(holes, plan, options, pl, ctx.name);
   if (svg.rfind("<?xml", 0) == 0) svg.erase(0, svg.find('\n') + 1);
   h << "<h2>Route</h2>\n<div class=\"picture\">\n" << svg << "</div>\n";
   h << "<p>Made by acodrill, " << esc(aco::to_string(plan.solver.algorithm)) << " seed " << plan.solver.seed

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <initializer_list>
 #include <sstream>
 
 #include "gcode/program.h"
@@ -69,14 +70,23 @@ void panel(std::ostringstream& out, const aco::HoleSet& holes, const PlanResult&
     const std::string colour = tool_colour(g);
     out << "<polyline fill=\"none\" stroke=\"" << colour << "\" stroke-width=\"1.2\" stroke-opacity=\"0.8\" "
         << "marker-mid=\"url(#arrow" << g << ")\" points=\"" << num(X(at.x)) << "," << num(Y(at.y));
+    // Appended to one string, not streamed number by number: at 10^6 holes
+    // these are 4 x 10^6 numbers (issue 84).
+    std::string points;
+    auto point = [&](double x, double y) {
+      points += ' ';
+      gcode::append_number(points, X(x), 3);
+      points += ',';
+      gcode::append_number(points, Y(y), 3);
+    };
     for (aco::HoleIndex i : *orders[g]) {
       const aco::Point2 p = holes[i].center;
       // A midpoint vertex carries the direction arrow in the middle of each leg.
-      out << " " << num(X((at.x + p.x) / 2)) << "," << num(Y((at.y + p.y) / 2)) << " " << num(X(p.x)) << ","
-          << num(Y(p.y));
+      point((at.x + p.x) / 2, (at.y + p.y) / 2);
+      point(p.x, p.y);
       at = p;
     }
-    out << "\"/>\n";
+    out << points << "\"/>\n";
   }
   const aco::Point2 home = options.machine.start;
   out << "<polyline fill=\"none\" stroke=\"#888888\" stroke-width=\"1\" stroke-dasharray=\"4 3\" points=\"" << num(X(at.x))
@@ -93,20 +103,27 @@ void panel(std::ostringstream& out, const aco::HoleSet& holes, const PlanResult&
       out << "<g fill=\"none\" stroke=\"" << tool_colour(g) << "\" stroke-width=\"1.5\""
           << (op == gcode::Operation::Countersink ? " stroke-dasharray=\"3 2\"" : "") << ">\n";
     }
+    std::string shapes;
+    // Text and numbers in turn, appended: as fast as the route above.
+    auto put = [&shapes](std::initializer_list<std::pair<const char*, double>> parts, const char* end) {
+      for (const auto& [text, value] : parts) {
+        shapes += text;
+        gcode::append_number(shapes, value, 3);
+      }
+      shapes += end;
+    };
     for (aco::HoleIndex i : *orders[g]) {
       const aco::Hole& hole = holes[i];
       const double cx = X(hole.center.x), cy = Y(hole.center.y), r = std::max(hole.diameter / 2 * scale, 1.5);
       if (op == gcode::Operation::Spot) {
-        out << "<path d=\"M" << num(cx - 3) << " " << num(cy) << "H" << num(cx + 3) << "M" << num(cx) << " " << num(cy - 3) << "V"
-            << num(cy + 3) << "\"/>\n";
+        put({{"<path d=\"M", cx - 3}, {" ", cy}, {"H", cx + 3}, {"M", cx}, {" ", cy - 3}, {"V", cy + 3}}, "\"/>\n");
       } else if (op == gcode::Operation::Tap) {
-        out << "<path d=\"M" << num(cx + r) << " " << num(cy) << "A" << num(r) << " " << num(r) << " 0 1 1 " << num(cx) << " "
-            << num(cy - r) << "\"/>\n";
+        put({{"<path d=\"M", cx + r}, {" ", cy}, {"A", r}, {" ", r}, {" 0 1 1 ", cx}, {" ", cy - r}}, "\"/>\n");
       } else {
-        out << "<circle cx=\"" << num(cx) << "\" cy=\"" << num(cy) << "\" r=\"" << num(r) << "\"/>\n";
+        put({{"<circle cx=\"", cx}, {"\" cy=\"", cy}, {"\" r=\"", r}}, "\"/>\n");
       }
     }
-    out << "</g>\n";
+    out << shapes << "</g>\n";
   }
   // Program zero, where the machinist sets the work offset: a crosshair.
   const double zx = X(0.0), zy = Y(0.0);

@@ -176,6 +176,9 @@ std::string z_home_block(Dialect d);
 
 // Locale-independent fixed-point text: always a decimal point, never "-0.000".
 std::string format_number(double value, int decimals);
+// format_number's text appended to `out`, without a string of its own: the
+// writers of 10^6-hole files call it tens of millions of times (issue 84).
+void append_number(std::string& out, double value, int decimals);
 
 // A number as a person reads it, for messages and comments: 6.5 not 6.500,
 // 3 not 3.000 (format_number's rounding, trailing zeros dropped).

@@ -10,7 +10,9 @@
 
 namespace job {
 
+// `route_svg`: the route picture (job::route_svg) when it is already made
+// (drawing it again took 1.3 s at 10^6 holes); empty: drawn here.
 std::string setup_sheet_html(const aco::HoleSet& holes, const planning::PlanResult& plan, const planning::PlanOptions& options,
-                             const ReportContext& context);
+                             const ReportContext& context, std::string route_svg = {});
 
 }  // namespace job
