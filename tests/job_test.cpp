@@ -193,6 +193,50 @@ TEST(job_test, a_job_in_slices_is_the_job_in_one_call) {
   }
 }
 
+// Issue 84: the page's time limit covers the outputs. The colony is
+// budgeted what is left after the work around it; with no time for it, each
+// tool's holes stay in their first (nearest-neighbour) route, and the job
+// still says "done", not "stopped".
+TEST(job_test, a_time_limit_that_covers_the_outputs_leaves_the_colony_out_when_there_is_no_time_for_it) {
+  job::PlanSettings settings;
+  settings.solver.seed = 3;
+  settings.solver.time_limit_s = 1e-6;
+  settings.solver.time_limit_covers_outputs = true;
+  settings.wanted.report = true;
+  const job::Result r = job::plan(files_of({sample("plate70.dxf")}), settings);
+  ASSERT_EQ(r.exit_code, 0) << r.error;
+  EXPECT_FALSE(r.stopped);
+  EXPECT_EQ(r.plan.iterations, 0);
+  ASSERT_FALSE(r.plan.groups.empty());
+  for (const planning::ToolGroup& g : r.plan.groups) {
+    EXPECT_EQ(g.solution.stop_reason, "time limit");
+    EXPECT_EQ(g.optimized.size(), g.input_order.size());
+  }
+  // The nearest-neighbour route itself: no local search, no iteration.
+  EXPECT_EQ(r.plan.optimized.travel_mm, r.plan.nearest_neighbor.travel_mm);
+  EXPECT_LT(r.plan.optimized.travel_mm, r.plan.input_order.travel_mm);
+  const gcode::Interpretation run = gcode::interpret(r.files.program);
+  EXPECT_EQ(run.holes.size(), r.holes.size());
+  EXPECT_TRUE(job::check_drilled(run, r.holes).empty());
+  EXPECT_EQ(nlohmann::json::parse(r.files.report)["tools"][0]["stop_reason"], "time limit");
+
+  // A limit the iterations end first: the budget changes nothing, and the
+  // input order counted before the routing is the one counted after it.
+  job::PlanSettings plain;
+  plain.solver.seed = 3;
+  plain.solver.iterations = 40;
+  plain.wanted.report = true;
+  job::PlanSettings budgeted = plain;
+  budgeted.solver.time_limit_s = 600;
+  budgeted.solver.time_limit_covers_outputs = true;
+  const job::Result a = job::plan(files_of({sample("plate70.dxf")}), plain);
+  const job::Result b = job::plan(files_of({sample("plate70.dxf")}), budgeted);
+  ASSERT_EQ(b.exit_code, 0) << b.error;
+  EXPECT_EQ(b.files.program, a.files.program);
+  EXPECT_EQ(b.plan.input_order.time_s, a.plan.input_order.time_s);
+  EXPECT_EQ(b.plan.input_order.travel_mm, a.plan.input_order.travel_mm);
+}
+
 TEST(job_test, a_bad_input_or_setting_is_one_line_and_nothing_else) {
   job::PlanSettings settings;
   job::Result r = job::plan({{"bad.csv", "x,y,diameter\n1,2,3\n4,five,3\n", ""}}, settings);

@@ -64,6 +64,8 @@ struct PlanJob::Impl {
   void prepare(std::vector<InputFile> files);
   void prepare_holes();
   void write_hole_program();
+  // SolverSettings::time_limit_covers_outputs: the routing's share of the time limit.
+  void budget_routing();
   void report(const aco::Progress& p);
   // A G-code program input (program_job.cpp): its checks, then its holes
   // reordered and written in its own style or a dialect.

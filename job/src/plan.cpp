@@ -237,6 +237,28 @@ void PlanJob::Impl::prepare_holes() {
   loaded.holes.clear();
   r.plan = planning::group_holes(r.holes, o, source);
   router = std::make_unique<planning::GroupRouter>(r.holes, r.plan, o);
+  if (s.solver.time_limit_covers_outputs && o.solver.time_limit_s > 0) budget_routing();
+}
+
+void PlanJob::Impl::budget_routing() {
+  // What the work around the colony costs is measured, not guessed: the
+  // input order's program written and timed (needed anyway) is one unit,
+  // on this machine and for these holes. What comes after the routing is
+  // about six such units (the plan's own program timed, written, read back
+  // and checked, the picture, the setup sheet, the drill files), the
+  // colony's set-up about three (the candidate lists and the first route);
+  // measured in the page's module at 10^5 and 10^6 holes.
+  constexpr double kFinishingUnits = 6.0, kSetUpUnits = 3.0;
+  const double before = seconds();
+  router->count_input_order();
+  const double unit = seconds() - before;
+  const double routing = s.solver.time_limit_s - seconds() - kFinishingUnits * unit;
+  if (routing < kSetUpUnits * unit) {
+    // No time for the colony: each tool's holes in nearest-neighbour order.
+    router->stop("time limit");
+    return;
+  }
+  o.solver.time_limit_s = routing;
 }
 
 void PlanJob::Impl::report(const aco::Progress& p) {

@@ -117,15 +117,17 @@ RouteUnits route_units(const aco::HoleSet& holes, const aco::Order& input_order)
 
 namespace {
 
-// The travel and time of each variant (input order, nearest neighbour, optimized) of the groups as they are.
-void count_variants(const aco::HoleSet& holes, PlanResult& result, const PlanOptions& options) {
+// The travel and time of each variant (input order, nearest neighbour,
+// optimized) of the groups as they are; `input_order`: false when it is
+// counted already.
+void count_variants(const aco::HoleSet& holes, PlanResult& result, const PlanOptions& options, bool input_order = true) {
   std::vector<const aco::Order*> in, nn, opt;
   for (const ToolGroup& g : result.groups) {
     in.push_back(&g.input_order);
     nn.push_back(&g.nearest_neighbor);
     opt.push_back(&g.optimized);
   }
-  result.input_order = route_stats(holes, result.groups, in, options);
+  if (input_order) result.input_order = route_stats(holes, result.groups, in, options);
   result.nearest_neighbor = route_stats(holes, result.groups, nn, options);
   result.optimized = route_stats(holes, result.groups, opt, options);
 }
@@ -234,7 +236,7 @@ void GroupRouter::end_group() {
       group.solution.order = aco::nearest_neighbor(c.problem);
       group.solution.length = aco::route_length(c.problem, group.solution.order);
       group.solution.algorithm = options_.solver.algorithm;
-      group.solution.stop_reason = "stopped";
+      group.solution.stop_reason = stop_reason_;
     } else {
       group.solution = c.run.finish();
     }
@@ -275,15 +277,23 @@ bool GroupRouter::advance(int max_iterations, double max_seconds) {
     if (max_seconds > 0.0 && seconds() >= max_seconds && next_ < result_.groups.size()) return false;
   }
   if (!counted_) {
-    count_variants(holes_, result_, options_);
+    count_variants(holes_, result_, options_, !input_counted_);
     counted_ = true;
   }
   return true;
 }
 
-void GroupRouter::stop() {
+void GroupRouter::count_input_order() {
+  std::vector<const aco::Order*> in;
+  for (const ToolGroup& g : result_.groups) in.push_back(&g.input_order);
+  result_.input_order = route_stats(holes_, result_.groups, in, options_);
+  input_counted_ = true;
+}
+
+void GroupRouter::stop(const std::string& reason) {
   if (stopped_) return;
   stopped_ = true;
+  stop_reason_ = reason;
   // The group under way keeps its best so far; those after it, their first route.
   while (next_ < result_.groups.size()) {
     if (!current_) begin_group();

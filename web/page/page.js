@@ -29,7 +29,7 @@
     ['processes', 'Processes', 'file', '.json', 'A process table (JSON, the one acodrill plan\u2019s processes option takes): which hole features of a drawing are spotted, drilled, reamed, countersunk, counterbored or tapped, and with what.'],
     ['panel', 'Panel', 'text', 'e.g. 3x2', 'Drill copies of the board as one job: COLSxROWS, with the pitch.'],
     ['pitch', 'Pitch', 'text', 'e.g. 60,40', 'DX,DY in mm between panel copies.'],
-    ['time_limit', 'Time limit', 'number', 'seconds', 'Stop the colony after this many seconds (empty: it stops by itself).'],
+    ['time_limit', 'Time limit', 'number', 'seconds', 'The plan ends within about this many seconds after the files are read, outputs included: the colony stops in time to write them (empty: it stops by itself).'],
     ['iterations', 'Iterations', 'number', 'default', 'Colony iterations per tool (empty: until the time limit, or the size\u2019s default). With a fixed count and seed, the program is the one acodrill plan writes.'],
     ['seed', 'Seed', 'number', '1', 'Random seed: the same files, settings and seed give the same program.'],
     ['algorithm', 'Algorithm', 'select', [['focused', 'focused (default)'], ['acs', 'ACS'], ['mmas', 'MAX-MIN'], ['as', 'Ant System (the thesis)']], 'The colony\u2019s algorithm.', true],
@@ -267,8 +267,13 @@
       describeHoles();
       showResults();
       enableSaves(true);
-      status((result.stopped ? 'Stopped: the best routes so far. ' : 'Done. ') + result.iterations + ' iterations in ' +
-             result.solver_wall_s.toFixed(2) + ' s.');
+      if (result.no_time_for_colony) {
+        status('Done. The time limit left no time for the colony after reading the files and before writing the ' +
+               'outputs: each tool\u2019s holes are in nearest-neighbour order. A longer Time limit lets the colony shorten them.');
+      } else {
+        status((result.stopped ? 'Stopped: the best routes so far. ' : 'Done. ') + result.iterations + ' iterations in ' +
+               result.solver_wall_s.toFixed(2) + ' s.');
+      }
       // The progress line ends with what was planned, not a value from the middle of the run.
       $('progress-text').textContent = (result.stopped ? 'Stopped' : 'Done') + ': ' + result.iterations + ' iterations in ' +
         result.solver_wall_s.toFixed(2) + ' s; route ' + result.optimized.travel_mm.toFixed(1) + ' mm of travel.';

@@ -5,6 +5,7 @@
 // messages (Stop) before the next, since a worker inside C++ sees none.
 #include <emscripten/emscripten.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <deque>
@@ -161,6 +162,7 @@ job::PlanSettings settings_of(const json& j) {
   if (auto v = number("alpha")) s.solver.alpha = *v;
   s.solver.beta = number("beta");
   s.solver.threads = 1;  // no threads in a file:// page (no cross-origin isolation)
+  s.solver.time_limit_covers_outputs = true;  // Plan to the files to save, within the "Time limit" (issue 84)
   // What the page saves (aco_finish): no comparison picture, no convergence
   // table; at 10^6 holes the comparison alone took 2.5 s (issue 84).
   s.wanted.report = s.wanted.route_svg = s.wanted.setup_sheet = s.wanted.excellon = s.wanted.gerber = true;
@@ -357,6 +359,10 @@ EMSCRIPTEN_KEEPALIVE const char* aco_finish() {
   out["routes"] = routes;
   out["input_routes"] = input_routes;
   out["stopped"] = r.stopped;
+  // The "Time limit" left the colony no time (budget_routing): first routes only.
+  out["no_time_for_colony"] = !r.plan.groups.empty() && std::all_of(r.plan.groups.begin(), r.plan.groups.end(), [](const planning::ToolGroup& g) {
+    return g.solution.stop_reason == "time limit" && g.solution.iterations == 0;
+  });
   out["iterations"] = r.plan.iterations;
   out["solver_wall_s"] = r.plan.solver_wall_s;
   out["input_order"] = stats_of(r.plan.input_order);

@@ -29,6 +29,10 @@ struct SolverSettings {
   int threads = 0;  // 0: all cores
   std::uint64_t seed = 1;
   double time_limit_s = 0.0;  // the whole job's, reading the inputs included; 0: none
+  // The time limit holds for the outputs too (the page's, issue 84): the
+  // colony ends early enough for the program, its check and the files to
+  // be made within it, or does not begin when there is no time for it.
+  bool time_limit_covers_outputs = false;
   int iterations = 0;         // 0: until the time limit, else the size's default
   std::string algorithm = "focused";
   int ants = 0;

@@ -118,8 +118,12 @@ class GroupRouter {
   // colony iterations (0: no bound) or `max_seconds` (0: none) have passed.
   bool advance(int max_iterations = 0, double max_seconds = 0.0);
   // Ends the routing now: the group under way keeps its best route so far,
-  // the groups after it their first (nearest neighbour, improved).
-  void stop();
+  // the groups after it their first (nearest neighbour, improved); those not
+  // begun say `reason` (their solution's stop_reason).
+  void stop(const std::string& reason = "stopped");
+  // The input order's travel and time, counted now rather than when the
+  // routing ends (the page times it to budget its time limit, issue 84).
+  void count_input_order();
   // The group being routed (groups().size() once all are), and its colony's iteration budget (0: none under way).
   std::size_t group() const;
   int group_iterations() const;
@@ -137,7 +141,8 @@ class GroupRouter {
   aco::Point2 at_, at_nn_;  // where the optimized and the nearest-neighbour routes are
   std::size_t next_ = 0;    // the group being routed
   std::unique_ptr<Group> current_;
-  bool counted_ = false, stopped_ = false;
+  bool counted_ = false, stopped_ = false, input_counted_ = false;
+  std::string stop_reason_ = "stopped";
 };
 
 // plan_job in its three stages: the holes grouped by tool (the checks, the
