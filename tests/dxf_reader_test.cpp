@@ -318,7 +318,11 @@ TEST(dxf_reader_bad_input, array_over_the_hole_limit) {
   dxf::ReadOptions o;
   o.max_holes = 1000;
   auto [line, what] = error_of(dxf_doc(insert("B", 0, 0, "70\n100\n71\n100\n44\n1\n45\n1\n"), block("B", circle(0, 0, 0.1))), o);
-  EXPECT_THAT(what, ::testing::HasSubstr("hole limit"));
+  EXPECT_THAT(what, ::testing::HasSubstr("more than 1000 holes (the hole limit, --max-holes)"));
+  // A front end without --max-holes (the page) names its limit its own way.
+  o.max_holes_named = "the most this page plans";
+  EXPECT_THAT(error_of(dxf_doc(insert("B", 0, 0, "70\n100\n71\n100\n44\n1\n45\n1\n"), block("B", circle(0, 0, 0.1))), o).second,
+              ::testing::HasSubstr("more than 1000 holes (the most this page plans)"));
   // An explosive array of empty blocks makes no holes but must not hang either.
   std::string blocks = block("E", "") + block("X", insert("E", 0, 0, "70\n30000\n71\n30000\n"));
   auto [l2, w2] = error_of(dxf_doc(insert("X", 0, 0, "70\n100\n71\n100\n"), blocks));

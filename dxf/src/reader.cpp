@@ -777,8 +777,8 @@ void Parser::emit_circle(const Circle& c, const Affine& to_world) {
     return;
   }
   if (++raw_holes_ > options_.max_holes) {
-    throw ReadError(c.line, "more than " + std::to_string(options_.max_holes) +
-                                " holes (the hole limit); block arrays expand too far");
+    throw ReadError(c.line, "more than " + std::to_string(options_.max_holes) + " holes (" + options_.max_holes_named +
+                                "); block arrays expand too far");
   }
   aco::Hole h;
   h.center = {center[0], center[1]};

@@ -93,7 +93,7 @@ LoadedHoles parse_csv(const std::string& path, std::string_view data, const Inpu
       out.features.push_back(std::move(f));
     }
     out.holes.push_back(std::move(h));
-    check_limit(path, no, out.holes.size(), options.dxf.max_holes);
+    check_limit(path, no, out.holes.size(), options.dxf);
     return true;
   });
   return out;

@@ -137,7 +137,7 @@ void Reader::repeat_pattern(std::string_view s) {
     h.center = {h.center.x + step_x_, h.center.y + step_y_};
     h.source_line = line_;
     out_.holes.push_back(std::move(h));
-    check_limit(path_, line_, out_.holes.size(), options_.dxf.max_holes);
+    check_limit(path_, line_, out_.holes.size(), options_.dxf);
   }
   for (std::size_t k = pattern_slots_; k < pattern_slot_end_; ++k) {
     Slot slot = out_.slots[k];
@@ -145,7 +145,7 @@ void Reader::repeat_pattern(std::string_view s) {
     slot.to = {slot.to.x + step_x_, slot.to.y + step_y_};
     slot.source_line = line_;
     out_.slots.push_back(std::move(slot));
-    check_limit(path_, line_, out_.slots.size(), options_.dxf.max_holes);
+    check_limit(path_, line_, out_.slots.size(), options_.dxf);
   }
 }
 
@@ -352,7 +352,7 @@ void Reader::hit(double x, double y) {
   h.layer = "T" + std::to_string(tool_);
   h.source_line = line_;
   out_.holes.push_back(std::move(h));
-  check_limit(path_, line_, out_.holes.size(), options_.dxf.max_holes);
+  check_limit(path_, line_, out_.holes.size(), options_.dxf);
 }
 
 void Reader::body_line(std::string_view s) {
@@ -538,7 +538,7 @@ void Reader::add_slot(aco::Point2 from, aco::Point2 to, std::uint32_t line) {
   slot.layer = "T" + std::to_string(tool_);
   slot.source_line = line;
   out_.slots.push_back(std::move(slot));
-  check_limit(path_, line_, out_.slots.size(), options_.dxf.max_holes);
+  check_limit(path_, line_, out_.slots.size(), options_.dxf);
 }
 
 void Reader::end_path() {

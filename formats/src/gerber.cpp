@@ -446,7 +446,7 @@ void GerberReader::emit(const Flash& f, aco::Point2 offset) {
     h.layer = layer;
     h.source_line = f.line;
     out_.holes.push_back(std::move(h));
-    check_limit(path_, f.line, out_.holes.size(), options_.dxf.max_holes);
+    check_limit(path_, f.line, out_.holes.size(), options_.dxf);
     return;
   }
   Slot s;
@@ -456,7 +456,7 @@ void GerberReader::emit(const Flash& f, aco::Point2 offset) {
   s.layer = layer;
   s.source_line = f.line;
   out_.slots.push_back(std::move(s));
-  check_limit(path_, f.line, out_.slots.size(), options_.dxf.max_holes);
+  check_limit(path_, f.line, out_.slots.size(), options_.dxf);
 }
 
 void GerberReader::close_step_and_repeat() {

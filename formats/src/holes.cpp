@@ -117,7 +117,8 @@ std::vector<aco::Point2> slot_holes(const Slot& slot, double pitch_mm) {
   return out;
 }
 
-void apply_slot_policy(LoadedHoles& loaded, const SlotOptions& options, const std::string& path, std::size_t max_holes) {
+void apply_slot_policy(LoadedHoles& loaded, const SlotOptions& options, const std::string& path, const dxf::ReadOptions& limit) {
+  const std::size_t max_holes = limit.max_holes;
   if (loaded.slots.empty()) return;
   std::uint32_t chain = 0;
   for (const aco::Hole& h : loaded.holes) chain = std::max(chain, h.chain);
@@ -155,7 +156,7 @@ void apply_slot_policy(LoadedHoles& loaded, const SlotOptions& options, const st
     const double count = pitch > 0 ? aco::euclidean(slot.from, slot.to) / pitch + 1 : 1;
     if (!(count <= static_cast<double>(max_holes - std::min(max_holes, loaded.holes.size())))) {
       throw InputError(path, slot.source_line, "drilling the slots makes more than " + std::to_string(max_holes) +
-                                                   " holes (the hole limit, --max-holes); a coarser --slot-pitch or --slots skip");
+                                                   " holes (" + limit.max_holes_named + "); a coarser --slot-pitch or --slots skip");
     }
     for (aco::Point2 p : slot_holes(slot, options.pitch_mm)) {
       add(p, false);
@@ -260,7 +261,7 @@ std::vector<LoadedHoles> board_sources(const std::string& path, std::string_view
         throw InputError(shown, slot.source_line, "a slot's numbers are too large to be a board's");
       }
     }
-    apply_slot_policy(s, options.slots, shown, options.dxf.max_holes);
+    apply_slot_policy(s, options.slots, shown, options.dxf);
     filter(s, options);
     s.name = stem(path);
   }
@@ -406,7 +407,7 @@ LoadedHoles parse_holes_as(InputFormat format, const std::string& path, const st
       out = parse_program(shown, data, options.keep_milling);
       break;
   }
-  apply_slot_policy(out, options.slots, shown, options.dxf.max_holes);
+  apply_slot_policy(out, options.slots, shown, options.dxf);
   filter(out, options);
   if (path != "-") out.name = out.format == InputFormat::Tsplib ? out.name : stem(path);
   return out;

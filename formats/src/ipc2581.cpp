@@ -226,7 +226,7 @@ class Ipc2581Reader {
         h.source_line = line_of(c);
         LoadedHoles& to = sources_.of(text_attr(c, "platingStatus") != "NONPLATED" && !layer.span.back_drill, layer.span);
         to.holes.push_back(std::move(h));
-        check_limit(path_, line_of(c), ++holes_, options_.dxf.max_holes);
+        check_limit(path_, line_of(c), ++holes_, options_.dxf);
         ++per_layer_[layer.name];
       } else if (named(c, "SlotCavity")) {
         aco::Point2 offset{0, 0};

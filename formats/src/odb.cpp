@@ -195,7 +195,7 @@ class OdbReader {
         aco::Hole h = f.hole;
         h.center = place.apply(h.center);
         to.holes.push_back(std::move(h));
-        check_limit(path_, f.hole.source_line, ++holes_, options_.dxf.max_holes);
+        check_limit(path_, f.hole.source_line, ++holes_, options_.dxf);
       }
     }
     for (const Block& b : hdr) {
@@ -336,13 +336,13 @@ class OdbReader {
           h.center = {v[0] * unit, v[1] * unit};
           f.hole = std::move(h);
           out.push_back(std::move(f));
-          check_limit(shown, no, out.size(), options_.dxf.max_holes);
+          check_limit(shown, no, out.size(), options_.dxf);
           return true;
         }
         f.is_slot = true;
         f.slot = Slot{{v[0] * unit, v[1] * unit}, {v[2] * unit, v[3] * unit}, h.diameter, layer.name, no};
         out.push_back(std::move(f));
-        check_limit(shown, no, out.size(), options_.dxf.max_holes);
+        check_limit(shown, no, out.size(), options_.dxf);
         return true;
       }
       const std::size_t x = symbol.find('x');
@@ -363,7 +363,7 @@ class OdbReader {
         f.is_slot = true;
         f.slot = Slot{turn.apply({-along.x, -along.y}), turn.apply(along), width, layer.name, no};
         out.push_back(std::move(f));
-        check_limit(shown, no, out.size(), options_.dxf.max_holes);
+        check_limit(shown, no, out.size(), options_.dxf);
         return true;
       }
       skipped_.push_back({no, name + ": a " + std::string(pad ? "pad" : "line") + " of symbol " + symbol +

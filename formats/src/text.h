@@ -60,9 +60,9 @@ inline void for_each_line(std::string_view data, F&& f) {
 }
 
 // Refuses more holes than the limit (--max-holes), naming the line that passed it.
-inline void check_limit(const std::string& path, std::uint32_t line, std::size_t count, std::size_t limit) {
-  if (count > limit) {
-    throw InputError(path, line, "more than " + std::to_string(limit) + " holes (the hole limit, --max-holes)");
+inline void check_limit(const std::string& path, std::uint32_t line, std::size_t count, const dxf::ReadOptions& limit) {
+  if (count > limit.max_holes) {
+    throw InputError(path, line, "more than " + std::to_string(limit.max_holes) + " holes (" + limit.max_holes_named + ")");
   }
 }
 

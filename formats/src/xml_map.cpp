@@ -71,7 +71,7 @@ LoadedHoles parse_xml_map(const std::string& path, std::string_view data, const 
     given.counterbore_mm *= unit, given.counterbore_depth_mm *= unit, given.countersink_mm *= unit;
     listed.push_back(listed_feature(h, given, unit == 25.4, options.processes.get(), path));
     out.holes.push_back(std::move(h));
-    check_limit(path, line, out.holes.size(), options.dxf.max_holes);
+    check_limit(path, line, out.holes.size(), options.dxf);
   }
   // Features only where the map gives one: a plain map stays the thesis's.
   if (any_feature) out.features = std::move(listed);

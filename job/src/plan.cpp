@@ -225,7 +225,7 @@ void PlanJob::Impl::prepare_holes() {
     r.panel_copies = placements.size();
     if (loaded.holes.size() * r.panel_copies > s.input.max_holes) {
       throw UserError("--panel: " + std::to_string(r.panel_copies) + " copies of " + std::to_string(loaded.holes.size()) +
-                      " holes exceed the hole limit (--max-holes " + std::to_string(s.input.max_holes) + ")");
+                      " holes exceed " + std::to_string(s.input.max_holes) + " holes (" + s.input.max_holes_named + ")");
     }
     loaded.holes = planning::panelize(loaded.holes, placements, o.hole_source);
   }

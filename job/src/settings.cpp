@@ -70,6 +70,7 @@ formats::InputOptions input_options(const InputSettings& a) {
   if (a.min_diameter_mm) o.dxf.min_diameter_mm = *a.min_diameter_mm;
   if (a.max_diameter_mm) o.dxf.max_diameter_mm = *a.max_diameter_mm;
   o.dxf.max_holes = a.max_holes;
+  o.dxf.max_holes_named = a.max_holes_named;
   o.dxf.max_block_references = a.max_expansion;
   if (!a.input_units.empty()) {
     if (a.input_units == "mm") o.default_unit_mm = 1.0;

@@ -11,7 +11,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   options.dxf.max_holes = 100000;
   try {
     formats::LoadedHoles loaded = formats::parse_gerber("fuzz", input, options);
-    formats::apply_slot_policy(loaded, options.slots, "fuzz", options.dxf.max_holes);
+    formats::apply_slot_policy(loaded, options.slots, "fuzz", options.dxf);
   } catch (const app::UserError&) {
   }
   return 0;

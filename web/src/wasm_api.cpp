@@ -45,17 +45,10 @@ constexpr std::size_t kPageMaxHoles = 2'000'000;
 const char* const kOutOfMemory =
     "the job needs more memory than the browser gives this page: plan it with the command line (acodrill plan)";
 
-// The command line's hole limit, as the page has it.
-std::string in_page_terms(std::string message) {
-  const std::string most = "the most this page plans in a browser's memory; the command line, acodrill plan, takes up to 5000000";
-  for (const auto& [limit, said] : {std::pair{std::string("(the hole limit, --max-holes)"), "(" + most + ")"},
-                                    {"the hole limit (--max-holes " + std::to_string(kPageMaxHoles) + ")",
-                                     std::to_string(kPageMaxHoles) + " holes (" + most + ")"}}) {
-    const std::size_t at = message.find(limit);
-    if (at != std::string::npos) message.replace(at, limit.size(), said);
-  }
-  return message;
-}
+// The hole limit as the page names it in its messages.
+const char* const kPageHoleLimitNamed =
+    "the most this page plans in a browser's memory; the command line, acodrill plan, takes up to 5000000";
+
 Session& session() {
   static Session s;
   return s;
@@ -167,10 +160,11 @@ job::PlanSettings settings_of(const json& j) {
   // table; at 10^6 holes the comparison alone took 2.5 s (issue 84).
   s.wanted.report = s.wanted.route_svg = s.wanted.setup_sheet = s.wanted.excellon = s.wanted.gerber = true;
   s.input.max_holes = kPageMaxHoles;
+  s.input.max_holes_named = kPageHoleLimitNamed;
   return s;
 }
 
-json error_of(const job::Result& r) { return {{"error", in_page_terms(r.error)}, {"exit_code", r.exit_code}}; }
+json error_of(const job::Result& r) { return {{"error", r.error}, {"exit_code", r.exit_code}}; }
 
 json stats_of(const planning::RouteStats& st) {
   return {{"travel_mm", st.travel_mm},
@@ -290,7 +284,7 @@ EMSCRIPTEN_KEEPALIVE const char* aco_open(const char* settings_json) {
                                     {"improved", p.improved}});
     });
   } catch (const formats::InputError& e) {
-    return answer({{"error", in_page_terms(e.where_what())}, {"exit_code", 2}});
+    return answer({{"error", e.where_what()}, {"exit_code", 2}});
   } catch (const std::bad_alloc&) {
     s.job.reset();
     return answer({{"error", kOutOfMemory}, {"exit_code", 2}});

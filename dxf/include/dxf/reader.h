@@ -55,6 +55,9 @@ struct ReadOptions {
   // Caps that keep a hostile file from eating the machine: holes produced, and
   // block references followed (an INSERT array of empty blocks makes no holes but costs time).
   std::size_t max_holes = 5'000'000;
+  // What the limit is called in messages ("more than N holes (...)"): the
+  // page names its own, with no --max-holes to give (issue 84).
+  std::string max_holes_named = "the hole limit, --max-holes";
   std::size_t max_block_references = 10'000'000;
   int max_block_depth = 200;
   // Issue 71: closed contours that are circles within `round_tolerance` (the

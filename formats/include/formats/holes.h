@@ -153,8 +153,8 @@ std::vector<aco::Point2> slot_holes(const Slot& slot, double pitch_mm);
 
 // Applies the slot policy: drilled slots become holes (one chain each, so the
 // planner keeps their order); skipped ones are named in `skipped`. More than
-// `max_holes` holes in all is an InputError naming `path` and the slot's line.
-void apply_slot_policy(LoadedHoles& loaded, const SlotOptions& options, const std::string& path, std::size_t max_holes);
+// `limit.max_holes` holes in all is an InputError naming `path` and the slot's line.
+void apply_slot_policy(LoadedHoles& loaded, const SlotOptions& options, const std::string& path, const dxf::ReadOptions& limit);
 
 // A drilling program's holes in program order, one per hole drilled (one
 // drilled twice is there twice): layer "T<n>" ("T<n> G55" in another work offset than G54), the diameter the program's

@@ -48,6 +48,7 @@ struct InputSettings {
   std::optional<double> min_diameter_mm, max_diameter_mm;
   std::string input_units;  // mm | inch; empty: each format's own default
   std::size_t max_holes = 5'000'000;
+  std::string max_holes_named = "the hole limit, --max-holes";  // in messages; the page says its own
   std::size_t max_expansion = 10'000'000;
   std::string slots = "drill";  // drill | skip | mill
   double slot_pitch_mm = 0.0;
