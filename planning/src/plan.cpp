@@ -129,7 +129,11 @@ void count_variants(const aco::HoleSet& holes, PlanResult& result, const PlanOpt
   }
   if (input_order) result.input_order = route_stats(holes, result.groups, in, options);
   result.nearest_neighbor = route_stats(holes, result.groups, nn, options);
-  result.optimized = route_stats(holes, result.groups, opt, options);
+  // The same orders are the same program: not written and timed twice (the
+  // first routes alone, when the page's time limit leaves the colony out).
+  const bool same = std::all_of(result.groups.begin(), result.groups.end(),
+                                [](const ToolGroup& g) { return g.optimized == g.nearest_neighbor; });
+  result.optimized = same ? result.nearest_neighbor : route_stats(holes, result.groups, opt, options);
 }
 
 }  // namespace

@@ -269,6 +269,21 @@ async function fresh(context) {
     await fill(page, { [label]: '' });
   }
   await page.waitForFunction(() => document.getElementById('error').hidden, null, { timeout: 30000 });
+  // A colony setting changes the routes, not the holes: checked, the files not
+  // read again (at 10^6 holes a reading takes seconds, and Plan waited behind it).
+  await page.evaluate(() => {
+    window.readings = 0;
+    new MutationObserver(() => { if (/^Reading/.test(document.getElementById('status').textContent)) window.readings++; })
+      .observe(document.getElementById('status'), { childList: true, characterData: true, subtree: true });
+  });
+  await fill(page, { Seed: '7', 'Time limit': '30', Alpha: '2' });
+  await page.waitForTimeout(1000);
+  check(await page.evaluate(() => window.readings) === 0, 'Seed, Time limit and Alpha changed: the files are not read again');
+  await fill(page, { Side: 'back' });
+  await page.waitForFunction(() => window.readings > 0, null, { timeout: 30000 }).catch(() => {});
+  check(await page.evaluate(() => window.readings) > 0, 'Side changed: the files are read again (the holes move)');
+  await fill(page, { Seed: '', 'Time limit': '', Alpha: '', Side: 'front' });
+  await page.waitForFunction(() => /^Read /.test(document.getElementById('status').textContent), null, { timeout: 30000 });
 
   check(!/--/.test(await page.evaluate(() => document.body.innerText)), 'nothing the page says names a command-line option ("--")');
 

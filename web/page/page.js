@@ -194,7 +194,26 @@
     status('Reading ' + files.map((f) => f.name).join(', ') + '\u2026');
     const copies = files.map((f) => ({ name: f.name, bytes: f.bytes.slice(0) }));
     const s = settings();
-    openKeys.set(send({ cmd: 'open', files: copies, settings: s }, copies.map((c) => c.bytes)), JSON.stringify(s));
+    openKeys.set(send({ cmd: 'open', files: copies, settings: s }, copies.map((c) => c.bytes)), viewKeyOf(s));
+  }
+  // The colony's settings change the routes, not the holes and tools read:
+  // a change of one is checked, not read again (at 10^6 holes a reading
+  // takes seconds, and Plan waited behind it; issue 84).
+  const COLONY_SETTINGS = ['time_limit', 'iterations', 'seed', 'algorithm', 'alpha', 'beta', 'ants'];
+  function viewKeyOf(s) {
+    const rest = { ...s };
+    for (const k of COLONY_SETTINGS) delete rest[k];
+    return JSON.stringify(rest);
+  }
+  let checkedError = false;  // the error shown is a colony setting's, from a check
+  function settingChanged(e) {
+    saveSettings();
+    const key = e && e.target && e.target.id ? e.target.id.replace(/^set-/, '') : '';
+    if (COLONY_SETTINGS.includes(key)) {
+      if (workerReady) send({ cmd: 'check', settings: settings() });
+    } else if (files.length && !planning) {
+      preview();
+    }
   }
 
   function onWorker(msg) {
@@ -204,6 +223,17 @@
       document.body.dataset.ready = '1';
       status('Ready.');
       preview();
+      return;
+    }
+    if (msg.cmd === 'checked') {
+      // A colony setting: its refusal shown, or the refusal it caused gone.
+      if (msg.error) {
+        showError(msg.error);
+        checkedError = true;
+      } else if (checkedError) {
+        showError('');
+        checkedError = false;
+      }
       return;
     }
     if (msg.cmd === 'crashed') {
@@ -315,7 +345,7 @@
     running(true);
     document.body.dataset.routing = 'yes';
     const s = settings();
-    planShowsView = view !== null && viewKey === JSON.stringify(s);
+    planShowsView = view !== null && viewKey === viewKeyOf(s);
     s.program_name = jobName() + '.' + (EXT[s.dialect] || 'nc');
     const machineSelect = $('set-machine');
     // The machine as plan resolves an empty choice: the router for GRBL and Marlin, else the VF-2.
@@ -399,10 +429,50 @@
     const xyd = v.holes, f = fit(canvas, xyd);
     const toolOf = new Int32Array(xyd.length / 3);
     v.tools.forEach((t, k) => { for (const h of t.holes) toolOf[h] = k; });
+    const n = xyd.length / 3;
+    // Many holes: routes and holes set pixel by pixel into a layer put once.
+    // The canvas's own fill of 200 000 squares took the page's thread over
+    // 500 ms to render, and its stroke of 100 000 legs 300 ms (issue 84).
+    const many = n > 20000;
+    const layer = many ? document.createElement('canvas') : null;
+    let image = null, px = null;
+    if (many) {
+      layer.width = canvas.width;
+      layer.height = canvas.height;
+      image = layer.getContext('2d').createImageData(layer.width, layer.height);
+      px = new Uint32Array(image.data.buffer);
+    }
+    const w = canvas.width, h = canvas.height;
+    // A colour as the layer's pixel: little-endian ABGR.
+    const pixel = (colour, alpha) => {
+      const c = parseInt(colour.slice(1), 16);
+      return ((alpha << 24) | (c & 0xff) << 16 | (c & 0xff00) | (c >> 16)) >>> 0;
+    };
     if (orders) {
       g.lineWidth = 1;
       orders.forEach((order, k) => {
         if (!order.length) return;
+        if (many) {
+          const c = pixel(COLOURS[k % COLOURS.length], 153);  // 0.6 opaque, as the strokes below
+          // Bresenham's lines, in whole pixels: a random plate's input order
+          // at 10^6 holes is 10^8 pixels of legs.
+          let x0 = Math.round(f.X(xyd[3 * order[0]])), y0 = Math.round(f.Y(xyd[3 * order[0] + 1]));
+          for (let i = 1; i < order.length; i++) {
+            const x1 = Math.round(f.X(xyd[3 * order[i]])), y1 = Math.round(f.Y(xyd[3 * order[i] + 1]));
+            const dx = Math.abs(x1 - x0), dy = -Math.abs(y1 - y0), sx = x0 < x1 ? 1 : -1, sy = y0 < y1 ? 1 : -1;
+            let x = x0, y = y0, err = dx + dy;
+            for (;;) {
+              if (x >= 0 && x < w && y >= 0 && y < h) px[y * w + x] = c;
+              if (x === x1 && y === y1) break;
+              const e2 = 2 * err;
+              if (e2 >= dy) { err += dy; x += sx; }
+              if (e2 <= dx) { err += dx; y += sy; }
+            }
+            x0 = x1;
+            y0 = y1;
+          }
+          return;
+        }
         g.strokeStyle = COLOURS[k % COLOURS.length];
         g.globalAlpha = 0.6;
         g.beginPath();
@@ -412,7 +482,6 @@
       });
       g.globalAlpha = 1;
     }
-    const n = xyd.length / 3;
     // Holes drilled are discs; a hole feature's other operations (issue 82)
     // are drawn over them as a drawing shows them: a counterbore or a reamer
     // a ring, a countersink a dashed ring, a tap three quarters of a ring, a
@@ -422,20 +491,10 @@
     // of a 100 000-hole drawing, a main-thread task over 100 ms (issue 84).
     const groups = v.tools.length ? v.tools.map((t, k) => ({ colour: COLOURS[k % COLOURS.length], holes: t.holes }))
                                   : [{ colour: '#333', holes: Array.from({ length: n }, (_, i) => i) }];
-    if (n > 20000) {
-      // Many holes: squares set pixel by pixel into a layer put once and
-      // drawn over the routes. The canvas's own fill of 200 000 squares took
-      // the page's thread over 500 ms to render.
-      const layer = document.createElement('canvas');
-      layer.width = canvas.width;
-      layer.height = canvas.height;
-      const lg = layer.getContext('2d');
-      const image = lg.createImageData(layer.width, layer.height);
-      const px = new Uint32Array(image.data.buffer);
-      const w = layer.width, h = layer.height;
+    if (many) {
+      // Squares over the routes, opaque.
       for (const { colour, holes } of groups) {
-        const c = parseInt(colour.slice(1), 16);
-        const abgr = (0xff000000 | (c & 0xff) << 16 | (c & 0xff00) | (c >> 16)) >>> 0;  // opaque, little-endian
+        const abgr = pixel(colour, 255);
         for (const i of holes) {
           if (opOf(i) !== 'drill') continue;
           const r = Math.max(1, Math.round(0.5 * xyd[3 * i + 2] * f.k));
@@ -445,7 +504,7 @@
           }
         }
       }
-      lg.putImageData(image, 0, 0);
+      layer.getContext('2d').putImageData(image, 0, 0);
       g.drawImage(layer, 0, 0);
     } else {
       for (const { colour, holes } of groups) {
@@ -612,7 +671,7 @@
   // --- wiring ---------------------------------------------------------------
   buildForm();
   loadSettings();
-  $('settings').addEventListener('change', () => { saveSettings(); if (files.length && !planning) preview(); });
+  $('settings').addEventListener('change', settingChanged);
   $('reset').addEventListener('click', () => {
     if (planning) return;
     try { localStorage.removeItem(STORE); } catch (e) { /* nothing kept */ }

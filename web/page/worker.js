@@ -105,7 +105,12 @@ onmessage = async (e) => {
   }
   await ready;
   try {
-    if (msg.cmd === 'open') {
+    if (msg.cmd === 'check') {
+      const settings = cString(JSON.stringify(msg.settings));
+      const out = answer(M._aco_check(settings));
+      M._free(settings);
+      postMessage({ cmd: 'checked', error: out.error || '' });
+    } else if (msg.cmd === 'open') {
       const { out, transfer } = packed(open(msg.files, msg.settings));
       postMessage({ cmd: 'opened', id: msg.id, result: out }, transfer);
     } else if (msg.cmd === 'plan') {

@@ -261,6 +261,20 @@ EMSCRIPTEN_KEEPALIVE void aco_add_file(const char* name, const std::uint8_t* byt
   session().files.push_back({name, std::string(reinterpret_cast<const char*>(bytes), static_cast<std::size_t>(size)), ""});
 }
 
+// The settings checked alone, without reading the files again: {} or the
+// error (a colony setting changed, which leaves the holes as they are).
+EMSCRIPTEN_KEEPALIVE const char* aco_check(const char* settings_json) {
+  new_answer();
+  try {
+    settings_of(json::parse(settings_json));
+  } catch (const formats::InputError& e) {
+    return answer({{"error", e.where_what()}, {"exit_code", 2}});
+  } catch (const std::exception& e) {
+    return answer({{"error", e.what()}, {"exit_code", 2}});
+  }
+  return answer(json::object());
+}
+
 // Reads the files with the settings: the holes, their tools and what the
 // inputs say, or the error. The job then waits for aco_advance.
 EMSCRIPTEN_KEEPALIVE const char* aco_open(const char* settings_json) {
