@@ -244,11 +244,12 @@ void PlanJob::Impl::budget_routing() {
   // What the work around the colony costs is measured, not guessed: the
   // input order's program written and timed (needed anyway) is one unit,
   // on this machine and for these holes. What comes after the routing is
-  // about six such units (the plan's own program timed, written, read back
-  // and checked, the picture, the setup sheet, the drill files), the
-  // colony's set-up about three (the candidate lists and the first route);
-  // measured in the page's module at 10^5 and 10^6 holes.
-  constexpr double kFinishingUnits = 6.0, kSetUpUnits = 3.0;
+  // about seven such units (the plan's own program timed, written, read back
+  // and checked, the picture, the setup sheet, the drill files, and the
+  // page copying and showing them), the colony's set-up up to four (the
+  // candidate lists and the first route, tool by tool); measured in the
+  // page, Chromium, at 10^5 and 10^6 holes.
+  constexpr double kFinishingUnits = 7.0, kSetUpUnits = 4.0;
   const double before = seconds();
   router->count_input_order();
   const double unit = seconds() - before;

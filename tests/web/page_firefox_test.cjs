@@ -71,6 +71,40 @@ async function saved(name) {
   const error = await page.$eval('#error', (e) => e.textContent);
   check(/^acodrill: error: bad\.csv:3: /.test(error), 'Firefox: a bad file is one line in Error: ' + error);
 
+  // The layout in Firefox (issue 84): on a laptop's 1366x768 and a 390x844
+  // phone, with a file of a long name open, Plan and the progress are in
+  // view, the drop box holds the name, and the page is no wider than the screen.
+  const longName = path.join(work, '\u043f\u043b\u0430\u0442\u0430 \u6e2c\u8a66 board v2 ' + 'a-very-long-file-name-'.repeat(6) + '.dxf');
+  fs.copyFileSync(plate, longName);
+  for (const [w, h] of [[1366, 768], [390, 844]]) {
+    const small = await context.newPage();
+    await small.setViewport({ width: w, height: h });
+    await small.goto('file://' + path.resolve(page_html));
+    await small.waitForSelector('body[data-ready="1"]', { timeout: 60000 });
+    await (await small.$('#files')).uploadFile(longName);
+    await small.waitForFunction(() => /70 holes/.test(document.getElementById('holes-info').textContent), { timeout: 60000 });
+    const layout = await small.evaluate(() => {
+      const inView = ['plan', 'progress-text'].every((id) => {
+        const r = document.getElementById(id).getBoundingClientRect();
+        return r.width > 0 && r.top >= 0 && r.bottom <= window.innerHeight && r.left >= 0 && r.right <= window.innerWidth;
+      });
+      const drop = document.getElementById('drop').getBoundingClientRect();
+      const inside = (id) => {
+        const r = document.getElementById(id).getBoundingClientRect();
+        return r.right <= drop.right + 0.5 && r.left >= drop.left - 0.5;
+      };
+      const named = document.getElementById('files-open');
+      return { inView, inDrop: inside('files') && inside('files-open') && named.scrollWidth <= named.clientWidth &&
+                                /a-very-long-file-name-/.test(named.textContent),
+               over: document.documentElement.scrollWidth - window.innerWidth };
+    });
+    check(layout.inView, 'Firefox ' + w + 'x' + h + ': Plan and the progress are in view after opening a file');
+    check(layout.inDrop, 'Firefox ' + w + 'x' + h + ': a long file name stays inside the drop box');
+    check(layout.over <= 0, 'Firefox ' + w + 'x' + h + ': the page is not wider than the screen (' + layout.over + ' px over)');
+    await small.screenshot({ path: path.join(path.dirname(page_html), 'page-firefox-' + w + 'x' + h + '.png') });
+    await small.close();
+  }
+
   check(errors.length === 0, 'no script error: ' + errors.join('; '));
   check(outside.length === 0, 'no request leaves file:, data: or blob:: ' + outside.join(' '));
   await browser.close();

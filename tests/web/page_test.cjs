@@ -88,6 +88,9 @@ async function fresh(context) {
   check(saved.bytes.equals(cli([plate], ['--iterations', '40', '--seed', '3'])), 'DXF: the program is acodrill plan\'s, byte for byte');
   const holesText = await page.getByRole('region', { name: 'Holes' }).textContent();
   check(holesText.includes('70 holes'), 'the holes region tells the holes: ' + holesText.slice(0, 60));
+  // The file control is cleared after a choice (a file chosen again is read again): the box says what is open.
+  const openSaid = await page.locator('#files-open').textContent();
+  check(openSaid === 'Open: plate70.dxf', 'the drop box names the file open: ' + openSaid);
 
   // 1b. Hole features with a process table (issue 82): the build plate drawn
   // without its callout, its counterbores and left-hand taps from the table;

@@ -177,6 +177,9 @@
   function setFiles(list) {
     if (planning) return;  // (the controls are disabled; a drop is refused in its handler)
     files = list;
+    // What is open, said in the box: the file control is cleared after each
+    // choice (so that a file chosen again is read again) and names nothing.
+    $('files-open').textContent = 'Open: ' + list.map((f) => f.name).join(', ');
     view = null;
     viewKey = null;
     $('plan').disabled = true;  // until the files read
@@ -422,66 +425,21 @@
     const ox = pad + (w - (x1 - x0) * k) / 2, oy = pad + (h - (y1 - y0) * k) / 2;
     return { k, X: (x) => ox + (x - x0) * k, Y: (y) => canvas.height - oy - (y - y0) * k };
   }
+  // A drawing of many holes runs in pieces of about 40 ms of the page's
+  // thread (at 10^6 holes the plate took it 0.9 s in one task and the input
+  // order's picture 2.8 s; issue 84); a newer drawing of a canvas ends an
+  // older one.
+  const drawings = new WeakMap();
   function draw(canvas, v, orders) {
     const g = canvas.getContext('2d');
+    const token = {};
+    drawings.set(canvas, token);
     g.clearRect(0, 0, canvas.width, canvas.height);
     if (!v || !v.holes.length) return;
     const xyd = v.holes, f = fit(canvas, xyd);
     const toolOf = new Int32Array(xyd.length / 3);
     v.tools.forEach((t, k) => { for (const h of t.holes) toolOf[h] = k; });
     const n = xyd.length / 3;
-    // Many holes: routes and holes set pixel by pixel into a layer put once.
-    // The canvas's own fill of 200 000 squares took the page's thread over
-    // 500 ms to render, and its stroke of 100 000 legs 300 ms (issue 84).
-    const many = n > 20000;
-    const layer = many ? document.createElement('canvas') : null;
-    let image = null, px = null;
-    if (many) {
-      layer.width = canvas.width;
-      layer.height = canvas.height;
-      image = layer.getContext('2d').createImageData(layer.width, layer.height);
-      px = new Uint32Array(image.data.buffer);
-    }
-    const w = canvas.width, h = canvas.height;
-    // A colour as the layer's pixel: little-endian ABGR.
-    const pixel = (colour, alpha) => {
-      const c = parseInt(colour.slice(1), 16);
-      return ((alpha << 24) | (c & 0xff) << 16 | (c & 0xff00) | (c >> 16)) >>> 0;
-    };
-    if (orders) {
-      g.lineWidth = 1;
-      orders.forEach((order, k) => {
-        if (!order.length) return;
-        if (many) {
-          const c = pixel(COLOURS[k % COLOURS.length], 153);  // 0.6 opaque, as the strokes below
-          // Bresenham's lines, in whole pixels: a random plate's input order
-          // at 10^6 holes is 10^8 pixels of legs.
-          let x0 = Math.round(f.X(xyd[3 * order[0]])), y0 = Math.round(f.Y(xyd[3 * order[0] + 1]));
-          for (let i = 1; i < order.length; i++) {
-            const x1 = Math.round(f.X(xyd[3 * order[i]])), y1 = Math.round(f.Y(xyd[3 * order[i] + 1]));
-            const dx = Math.abs(x1 - x0), dy = -Math.abs(y1 - y0), sx = x0 < x1 ? 1 : -1, sy = y0 < y1 ? 1 : -1;
-            let x = x0, y = y0, err = dx + dy;
-            for (;;) {
-              if (x >= 0 && x < w && y >= 0 && y < h) px[y * w + x] = c;
-              if (x === x1 && y === y1) break;
-              const e2 = 2 * err;
-              if (e2 >= dy) { err += dy; x += sx; }
-              if (e2 <= dx) { err += dx; y += sy; }
-            }
-            x0 = x1;
-            y0 = y1;
-          }
-          return;
-        }
-        g.strokeStyle = COLOURS[k % COLOURS.length];
-        g.globalAlpha = 0.6;
-        g.beginPath();
-        g.moveTo(f.X(xyd[3 * order[0]]), f.Y(xyd[3 * order[0] + 1]));
-        for (let i = 1; i < order.length; i++) g.lineTo(f.X(xyd[3 * order[i]]), f.Y(xyd[3 * order[i] + 1]));
-        g.stroke();
-      });
-      g.globalAlpha = 1;
-    }
     // Holes drilled are discs; a hole feature's other operations (issue 82)
     // are drawn over them as a drawing shows them: a counterbore or a reamer
     // a ring, a countersink a dashed ring, a tap three quarters of a ring, a
@@ -491,22 +449,36 @@
     // of a 100 000-hole drawing, a main-thread task over 100 ms (issue 84).
     const groups = v.tools.length ? v.tools.map((t, k) => ({ colour: COLOURS[k % COLOURS.length], holes: t.holes }))
                                   : [{ colour: '#333', holes: Array.from({ length: n }, (_, i) => i) }];
-    if (many) {
-      // Squares over the routes, opaque.
-      for (const { colour, holes } of groups) {
-        const abgr = pixel(colour, 255);
-        for (const i of holes) {
-          if (opOf(i) !== 'drill') continue;
-          const r = Math.max(1, Math.round(0.5 * xyd[3 * i + 2] * f.k));
-          const x = Math.round(f.X(xyd[3 * i])), y = Math.round(f.Y(xyd[3 * i + 1]));
-          for (let yy = Math.max(0, y - r); yy < Math.min(h, y + r); yy++) {
-            for (let xx = Math.max(0, x - r); xx < Math.min(w, x + r); xx++) px[yy * w + xx] = abgr;
-          }
-        }
+    const operations = () => {
+      g.lineWidth = 1.5;
+      for (let i = 0; i < n; i++) {
+        const op = opOf(i);
+        if (op === 'drill') continue;
+        const x = f.X(xyd[3 * i]), y = f.Y(xyd[3 * i + 1]), r = Math.max(2, 0.5 * xyd[3 * i + 2] * f.k);
+        g.strokeStyle = COLOURS[toolOf[i] % COLOURS.length];
+        g.setLineDash(op === 'countersink' ? [3, 2] : []);
+        g.beginPath();
+        if (op === 'spot') { g.moveTo(x - 3, y); g.lineTo(x + 3, y); g.moveTo(x, y - 3); g.lineTo(x, y + 3); }
+        else if (op === 'tap') g.arc(x, y, r, 0, 1.5 * Math.PI);
+        else g.arc(x, y, r, 0, 2 * Math.PI);
+        g.stroke();
       }
-      layer.getContext('2d').putImageData(image, 0, 0);
-      g.drawImage(layer, 0, 0);
-    } else {
+      g.setLineDash([]);
+    };
+    if (n <= 20000) {
+      if (orders) {
+        g.lineWidth = 1;
+        g.globalAlpha = 0.6;
+        orders.forEach((order, k) => {
+          if (!order.length) return;
+          g.strokeStyle = COLOURS[k % COLOURS.length];
+          g.beginPath();
+          g.moveTo(f.X(xyd[3 * order[0]]), f.Y(xyd[3 * order[0] + 1]));
+          for (let i = 1; i < order.length; i++) g.lineTo(f.X(xyd[3 * order[i]]), f.Y(xyd[3 * order[i] + 1]));
+          g.stroke();
+        });
+        g.globalAlpha = 1;
+      }
       for (const { colour, holes } of groups) {
         const path = new Path2D();  // one fill a tool
         for (const i of holes) {
@@ -518,21 +490,76 @@
         g.fillStyle = colour;
         g.fill(path);
       }
+      operations();
+      return;
     }
-    g.lineWidth = 1.5;
-    for (let i = 0; i < n; i++) {
-      const op = opOf(i);
-      if (op === 'drill') continue;
-      const x = f.X(xyd[3 * i]), y = f.Y(xyd[3 * i + 1]), r = Math.max(2, 0.5 * xyd[3 * i + 2] * f.k);
-      g.strokeStyle = COLOURS[toolOf[i] % COLOURS.length];
-      g.setLineDash(op === 'countersink' ? [3, 2] : []);
-      g.beginPath();
-      if (op === 'spot') { g.moveTo(x - 3, y); g.lineTo(x + 3, y); g.moveTo(x, y - 3); g.lineTo(x, y + 3); }
-      else if (op === 'tap') g.arc(x, y, r, 0, 1.5 * Math.PI);
-      else g.arc(x, y, r, 0, 2 * Math.PI);
-      g.stroke();
+    // Many holes: routes and holes set pixel by pixel into a layer put once.
+    // The canvas's own fill of 200 000 squares took the page's thread over
+    // 500 ms to render, and its stroke of 100 000 legs 300 ms.
+    const layer = document.createElement('canvas');
+    layer.width = canvas.width;
+    layer.height = canvas.height;
+    const image = layer.getContext('2d').createImageData(layer.width, layer.height);
+    const px = new Uint32Array(image.data.buffer);
+    const w = canvas.width, h = canvas.height;
+    // A colour as the layer's pixel: little-endian ABGR.
+    const pixel = (colour, alpha) => {
+      const c = parseInt(colour.slice(1), 16);
+      return ((alpha << 24) | (c & 0xff) << 16 | (c & 0xff00) | (c >> 16)) >>> 0;
+    };
+    const PIECE = 4096;  // legs or holes between looks at the clock
+    function* paint() {
+      for (const [k, order] of (orders || []).entries()) {
+        if (!order.length) continue;
+        const c = pixel(COLOURS[k % COLOURS.length], 153);  // 0.6 opaque, as the strokes of few holes
+        // Bresenham's lines, in whole pixels: a random plate's input order
+        // at 10^6 holes is 10^8 pixels of legs.
+        let x0 = Math.round(f.X(xyd[3 * order[0]])), y0 = Math.round(f.Y(xyd[3 * order[0] + 1]));
+        for (let i = 1; i < order.length; i++) {
+          const x1 = Math.round(f.X(xyd[3 * order[i]])), y1 = Math.round(f.Y(xyd[3 * order[i] + 1]));
+          const dx = Math.abs(x1 - x0), dy = -Math.abs(y1 - y0), sx = x0 < x1 ? 1 : -1, sy = y0 < y1 ? 1 : -1;
+          let x = x0, y = y0, err = dx + dy;
+          for (;;) {
+            if (x >= 0 && x < w && y >= 0 && y < h) px[y * w + x] = c;
+            if (x === x1 && y === y1) break;
+            const e2 = 2 * err;
+            if (e2 >= dy) { err += dy; x += sx; }
+            if (e2 <= dx) { err += dx; y += sy; }
+          }
+          x0 = x1;
+          y0 = y1;
+          if (i % PIECE === 0) yield;
+        }
+      }
+      // Squares over the routes, opaque.
+      for (const { colour, holes } of groups) {
+        const abgr = pixel(colour, 255);
+        for (let j = 0; j < holes.length; j++) {
+          const i = holes[j];
+          if (opOf(i) !== 'drill') continue;
+          const r = Math.max(1, Math.round(0.5 * xyd[3 * i + 2] * f.k));
+          const x = Math.round(f.X(xyd[3 * i])), y = Math.round(f.Y(xyd[3 * i + 1]));
+          for (let yy = Math.max(0, y - r); yy < Math.min(h, y + r); yy++) {
+            for (let xx = Math.max(0, x - r); xx < Math.min(w, x + r); xx++) px[yy * w + xx] = abgr;
+          }
+          if (j % PIECE === 0) yield;
+        }
+      }
     }
-    g.setLineDash([]);
+    const steps = paint();
+    const run = () => {
+      if (drawings.get(canvas) !== token) return;
+      const until = performance.now() + 40;
+      while (performance.now() < until) {
+        if (!steps.next().done) continue;
+        layer.getContext('2d').putImageData(image, 0, 0);
+        g.drawImage(layer, 0, 0);
+        operations();
+        return;
+      }
+      setTimeout(run, 0);
+    };
+    run();
   }
   function drawHoles() { draw($('holes-canvas'), view, routes); }
 
