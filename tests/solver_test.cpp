@@ -275,7 +275,7 @@ TEST(solver_test, time_slices_end_inside_the_first_search_and_change_nothing) {
   int slices_in_search = 0, slices = 0;
   while (!run.advance(0, 0.002)) {
     ++slices;
-    if (run.iterations() == 0) {
+    if (run.begun() && run.iterations() == 0) {
       ++slices_in_search;
       ASSERT_TRUE(aco::is_permutation_of(p, run.best_order()));
     }
@@ -285,6 +285,35 @@ TEST(solver_test, time_slices_end_inside_the_first_search_and_change_nothing) {
   EXPECT_EQ(sliced.order, whole.order);
   EXPECT_EQ(sliced.length, whole.length);
   EXPECT_EQ(sliced.iterations, whole.iterations);
+}
+
+// Issue 84: the colony's set-up (the nearest lists' rows, the weights) is
+// cut by time slices too, since at 10^6 holes it takes seconds and a page's
+// Stop waits for the slice; cut anywhere, the run is the one solve() makes,
+// and a run ended in its set-up still gives a whole route.
+TEST(solver_test, time_slices_end_inside_the_set_up_and_change_nothing) {
+  const aco::Problem p = random_problem(60000, 29, aco::Shape::OpenPath);
+  aco::Params params = quick(aco::Algorithm::AntColonySystem, aco::LocalSearch::None);
+  params.iterations = 2;
+  const aco::Solution whole = aco::solve(p, params);
+  aco::ColonyRun run(p, params);
+  int slices_in_set_up = 0;
+  while (!run.advance(0, 1e-6)) {
+    if (!run.begun()) ++slices_in_set_up;
+  }
+  EXPECT_GT(slices_in_set_up, 3) << "the set-up spans slices";
+  const aco::Solution sliced = run.finish();
+  EXPECT_EQ(sliced.order, whole.order);
+  EXPECT_EQ(sliced.length, whole.length);
+  EXPECT_EQ(sliced.iterations, whole.iterations);
+
+  aco::ColonyRun early(p, params);
+  EXPECT_FALSE(early.advance(0, 1e-6));
+  EXPECT_FALSE(early.begun());
+  const aco::Solution ended = early.finish();
+  EXPECT_EQ(ended.iterations, 0);
+  EXPECT_EQ(ended.stop_reason, "stopped");
+  EXPECT_TRUE(aco::is_permutation_of(p, ended.order));
 }
 
 TEST(solver_test, the_stop_flag_ends_the_run_with_its_best_route) {

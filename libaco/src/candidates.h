@@ -2,6 +2,7 @@
 // Nearest-neighbour candidate lists: for each hole its k nearest other holes,
 // nearest first. Built with a k-d tree (nanoflann) in O(n k log n), never an
 // n² scan, so 100 000 holes take well under a second.
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -53,6 +54,27 @@ struct Candidates {
 // the same lists); or the solve's team. So too below.
 Candidates build_candidates(const Space& space, int k, int threads = 1);
 Candidates build_candidates(const Space& space, int k, Team& team);
+
+// build_candidates in pieces, so that a slice of a large run ends on time
+// (issue 84: at 10^6 holes the rows took over a second in the browser, and
+// a Stop waited for them): the tree is built at construction, then `fill`
+// fills up to `rows` more rows; the lists are the same however it is cut.
+// `space` must outlive it.
+class NearestRows {
+ public:
+  NearestRows(const Space& space, int k);
+  ~NearestRows();
+  NearestRows(NearestRows&&) noexcept;
+  NearestRows& operator=(NearestRows&&) noexcept;
+  // True once every row is filled.
+  bool fill(Team& team, std::size_t rows);
+  // The lists, once fill() has said true.
+  Candidates take();
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
 
 // How far (in rings of the bucket grid, about 1.4 mean hole spacings each)
 // the quadrant search looks: far enough to join the clusters of fl1400 and

@@ -7,40 +7,64 @@
 namespace aco::detail {
 
 Colony::Colony(const Problem& problem, const Params& params, Team& team, const Clock& started)
-  : clock_(started), problem_(problem), p_(params), team_(&team), space_(problem), n_(space_.holes()) {
-  if (n_ <= kFullListLimit) {
-    cand_ = detail::build_candidates(space_, static_cast<int>(n_) - 1, *team_);
-  } else if (uses_alpha_lists(n_, p_.local_search)) {
-    Candidates nearest = detail::joined_nearest(space_, kAlphaFrom, *team_);
-    std::vector<double>().swap(nearest.length);  // not read by alpha_candidates: 13 MB less at 100 000 holes
-    cand_ = detail::alpha_candidates(space_, nearest, p_.candidates, ascent_iterations(n_, p_.time_limit_s), *team_,
-                                     uses_penalised_costs(n_, p_.local_search));
-  } else {
-    cand_ = detail::build_candidates(space_, p_.candidates, *team_);
-  }
-  k_ = cand_.k;
-  const std::size_t slots = static_cast<std::size_t>(n_) * k_;
-  tau_ = detail::Trail(slots, 0.0, p_.rho);
-  // Focused ants weigh their few rows as they go and never read choice_.
-  if (p_.algorithm != Algorithm::FocusedAcs) choice_.assign(slots, 0.0);
-  eta_beta_.assign(slots, 0.0);
-  for (HoleIndex i = 0; i < n_; ++i) {
-    const double* length = cand_.lengths_of(i);
-    for (int r = 0; r < k_; ++r) eta_beta_[idx(i, r)] = std::pow(eta(length[r]), p_.beta);
-  }
-  if (space_.open()) {
-    // Weights of the first step, from the start (V) to each hole: fixed for the whole run.
-    start_weight_.resize(n_);
-    for (HoleIndex h = 0; h < n_; ++h) start_weight_[h] = std::pow(eta(space_.e(n_, h)), p_.beta);
-  }
-  if (k_ == static_cast<int>(n_) - 1 && n_ > 1) {
-    rank_.assign(static_cast<std::size_t>(n_) * n_, -1);
-    // Focused ants weigh their candidate rows directly and never read it.
-    if (p_.algorithm != Algorithm::FocusedAcs) dense_choice_.assign(static_cast<std::size_t>(n_) * n_, 0.0);
-    for (HoleIndex i = 0; i < n_; ++i) {
-      for (int r = 0; r < k_; ++r) rank_[static_cast<std::size_t>(i) * n_ + cand_.of(i)[r]] = r;
+  : clock_(started), problem_(problem), p_(params), team_(&team), space_(problem), n_(space_.holes()) {}
+
+bool Colony::set_up(Team& team, double until_s) {
+  team_ = &team;
+  const auto slice_over = [&] { return until_s > 0.0 && clock_.seconds() >= until_s; };
+  // Rows a piece between two looks at the clock: tens of milliseconds in
+  // the browser's single thread.
+  constexpr std::size_t kRowsAPiece = 16384;
+  if (set_up_ == SetUp::Lists) {
+    if (n_ <= kFullListLimit) {
+      cand_ = detail::build_candidates(space_, static_cast<int>(n_) - 1, team);
+    } else if (uses_alpha_lists(n_, p_.local_search)) {
+      Candidates nearest = detail::joined_nearest(space_, kAlphaFrom, team);
+      std::vector<double>().swap(nearest.length);  // not read by alpha_candidates: 13 MB less at 100 000 holes
+      cand_ = detail::alpha_candidates(space_, nearest, p_.candidates, ascent_iterations(n_, p_.time_limit_s), team,
+                                       uses_penalised_costs(n_, p_.local_search));
+    } else {
+      if (!rows_) rows_ = std::make_unique<NearestRows>(space_, p_.candidates);
+      while (!rows_->fill(team, kRowsAPiece)) {
+        if (slice_over()) return false;
+      }
+      cand_ = rows_->take();
+      rows_.reset();
     }
+    k_ = cand_.k;
+    const std::size_t slots = static_cast<std::size_t>(n_) * k_;
+    tau_ = detail::Trail(slots, 0.0, p_.rho);
+    // Focused ants weigh their few rows as they go and never read choice_.
+    if (p_.algorithm != Algorithm::FocusedAcs) choice_.assign(slots, 0.0);
+    eta_beta_.assign(slots, 0.0);
+    set_up_ = SetUp::Weights;
   }
+  if (set_up_ == SetUp::Weights) {
+    while (weighted_ < n_) {
+      if (slice_over()) return false;
+      const HoleIndex to = static_cast<HoleIndex>(std::min<std::size_t>(n_, weighted_ + kRowsAPiece));
+      for (HoleIndex i = weighted_; i < to; ++i) {
+        const double* length = cand_.lengths_of(i);
+        for (int r = 0; r < k_; ++r) eta_beta_[idx(i, r)] = std::pow(eta(length[r]), p_.beta);
+      }
+      weighted_ = to;
+    }
+    if (space_.open()) {
+      // Weights of the first step, from the start (V) to each hole: fixed for the whole run.
+      start_weight_.resize(n_);
+      for (HoleIndex h = 0; h < n_; ++h) start_weight_[h] = std::pow(eta(space_.e(n_, h)), p_.beta);
+    }
+    if (k_ == static_cast<int>(n_) - 1 && n_ > 1) {
+      rank_.assign(static_cast<std::size_t>(n_) * n_, -1);
+      // Focused ants weigh their candidate rows directly and never read it.
+      if (p_.algorithm != Algorithm::FocusedAcs) dense_choice_.assign(static_cast<std::size_t>(n_) * n_, 0.0);
+      for (HoleIndex i = 0; i < n_; ++i) {
+        for (int r = 0; r < k_; ++r) rank_[static_cast<std::size_t>(i) * n_ + cand_.of(i)[r]] = r;
+      }
+    }
+    set_up_ = SetUp::Done;
+  }
+  return true;
 }
 
 Order Colony::to_order(const std::vector<HoleIndex>& route) const {

@@ -249,9 +249,15 @@ void walk_double_bridge(const Space& space, const Candidates& cand, std::vector<
 
 class Colony {
  public:
-  // Builds the candidate lists (every other hole, alpha-nearest or nearest)
-  // and the heuristic weights (colony.cpp).
+  // The colony of a problem; set_up() then builds its candidate lists (every
+  // other hole, alpha-nearest or nearest) and heuristic weights (colony.cpp).
   Colony(const Problem& problem, const Params& params, Team& team, const Clock& started);
+  // The set-up on `team`, in pieces (issue 84): true once done, false when
+  // the clock reached `until_s` first (0: no bound) and a later call goes
+  // on where it stopped. The nearest lists' rows and the weights are cut at
+  // any row, with the same result; the full lists and the alpha-nearest
+  // (up to kAlphaLimit holes) are made whole.
+  bool set_up(Team& team, double until_s);
 
   // The run (rounds.cpp), in slices: start() makes the first route and
   // trail; advance() runs rounds of ants on `team` until the run ends
@@ -407,6 +413,11 @@ class Colony {
   detail::Team* team_;  // the team of the slice under way (advance())
   Space space_;
   HoleIndex n_;
+  // Where set_up() is: the lists (rows_ while the nearest are filled), then
+  // the weights (rows below weighted_ done).
+  enum class SetUp { Lists, Weights, Done } set_up_ = SetUp::Lists;
+  std::unique_ptr<NearestRows> rows_;
+  HoleIndex weighted_ = 0;
   Candidates cand_;
   int k_ = 0;
   detail::Trail tau_;

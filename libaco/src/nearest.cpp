@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <nanoflann.hpp>
 #include <numeric>
 #include <utility>
@@ -33,61 +34,96 @@ using Tree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<do
 
 }  // namespace
 
-Candidates build_candidates(const Space& space, int k, Team& team) {
-  const HoleIndex n = space.holes();
+struct NearestRows::Impl {
+  const Space* space;
   Candidates c;
-  c.k = std::max(0, std::min<int>(k, static_cast<int>(n) - 1));
-  c.list.assign(static_cast<std::size_t>(n) * c.k, 0);
-  c.length.assign(c.list.size(), 0.0);
-  if (c.k == 0) return c;
-  PointCloud cloud{&space};
-  Tree tree(2, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));
-  tree.buildIndex();
-  // Ask for a few more than k: coincident holes and metric ties are then
-  // resolved by our own sort (distance in the problem's metric, then index),
-  // which keeps the lists identical on every machine and thread count.
-  const std::size_t want = std::min<std::size_t>(n, static_cast<std::size_t>(c.k) + 1 + 4);
+  PointCloud cloud;
+  std::unique_ptr<Tree> tree;
+  std::size_t want = 0, next = 0;  // neighbours asked of the tree; the first row not filled
   // Rows are independent: each worker fills chunks of them with its own scratch.
   struct Scratch {
     std::vector<std::size_t> idx;
     std::vector<double> dist2;
     std::vector<std::pair<double, HoleIndex>> row;
   };
-  std::vector<Scratch> scratch(static_cast<std::size_t>(team.threads()));
-  for (Scratch& sc : scratch) {
-    sc.idx.resize(want);
-    sc.dist2.resize(want);
-  }
-  team.chunks(n, kRowChunk, [&](std::size_t begin, std::size_t end, int me) {
-    std::vector<std::size_t>& idx = scratch[static_cast<std::size_t>(me)].idx;
-    std::vector<double>& dist2 = scratch[static_cast<std::size_t>(me)].dist2;
-    std::vector<std::pair<double, HoleIndex>>& row = scratch[static_cast<std::size_t>(me)].row;
-    for (auto i = static_cast<HoleIndex>(begin); i < end; ++i) {
-      const double q[2] = {space.point(i).x, space.point(i).y};
-      std::size_t found = tree.knnSearch(q, want, idx.data(), dist2.data());
-      row.clear();
-      for (std::size_t r = 0; r < found; ++r) {
-        auto j = static_cast<HoleIndex>(idx[r]);
-        if (j != i) row.emplace_back(space.d(i, j), j);
-      }
-      std::sort(row.begin(), row.end());
-      if (row.size() < static_cast<std::size_t>(c.k)) {
-        // Many coincident points crowd the k-d result; fall back to a full scan for this row.
-        row.clear();
-        for (HoleIndex j = 0; j < n; ++j) {
-          if (j != i) row.emplace_back(space.d(i, j), j);
-        }
-        std::partial_sort(row.begin(), row.begin() + c.k, row.end());
-      }
-      HoleIndex* out = c.list.data() + static_cast<std::size_t>(i) * c.k;
-      double* out_length = c.length.data() + static_cast<std::size_t>(i) * c.k;
-      for (int r = 0; r < c.k; ++r) {
-        out[r] = row[r].second;
-        out_length[r] = row[r].first;
-      }
+  std::vector<Scratch> scratch;
+
+  void fill_row(HoleIndex i, Scratch& sc) {
+    const HoleIndex n = space->holes();
+    const double q[2] = {space->point(i).x, space->point(i).y};
+    std::size_t found = tree->knnSearch(q, want, sc.idx.data(), sc.dist2.data());
+    std::vector<std::pair<double, HoleIndex>>& row = sc.row;
+    row.clear();
+    for (std::size_t r = 0; r < found; ++r) {
+      auto j = static_cast<HoleIndex>(sc.idx[r]);
+      if (j != i) row.emplace_back(space->d(i, j), j);
     }
+    std::sort(row.begin(), row.end());
+    if (row.size() < static_cast<std::size_t>(c.k)) {
+      // Many coincident points crowd the k-d result; fall back to a full scan for this row.
+      row.clear();
+      for (HoleIndex j = 0; j < n; ++j) {
+        if (j != i) row.emplace_back(space->d(i, j), j);
+      }
+      std::partial_sort(row.begin(), row.begin() + c.k, row.end());
+    }
+    HoleIndex* out = c.list.data() + static_cast<std::size_t>(i) * c.k;
+    double* out_length = c.length.data() + static_cast<std::size_t>(i) * c.k;
+    for (int r = 0; r < c.k; ++r) {
+      out[r] = row[r].second;
+      out_length[r] = row[r].first;
+    }
+  }
+};
+
+NearestRows::NearestRows(const Space& space, int k) : impl_(std::make_unique<Impl>()) {
+  Impl& m = *impl_;
+  const HoleIndex n = space.holes();
+  m.space = &space;
+  m.c.k = std::max(0, std::min<int>(k, static_cast<int>(n) - 1));
+  m.c.list.assign(static_cast<std::size_t>(n) * m.c.k, 0);
+  m.c.length.assign(m.c.list.size(), 0.0);
+  if (m.c.k == 0) {
+    m.next = n;
+    return;
+  }
+  m.cloud = PointCloud{&space};
+  m.tree = std::make_unique<Tree>(2, m.cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));
+  m.tree->buildIndex();
+  // Ask for a few more than k: coincident holes and metric ties are then
+  // resolved by our own sort (distance in the problem's metric, then index),
+  // which keeps the lists identical on every machine and thread count.
+  m.want = std::min<std::size_t>(n, static_cast<std::size_t>(m.c.k) + 1 + 4);
+}
+
+NearestRows::~NearestRows() = default;
+NearestRows::NearestRows(NearestRows&&) noexcept = default;
+NearestRows& NearestRows::operator=(NearestRows&&) noexcept = default;
+
+bool NearestRows::fill(Team& team, std::size_t rows) {
+  Impl& m = *impl_;
+  const std::size_t n = m.space->holes();
+  if (m.scratch.size() < static_cast<std::size_t>(team.threads())) {
+    m.scratch.resize(static_cast<std::size_t>(team.threads()));
+    for (Impl::Scratch& sc : m.scratch) {
+      sc.idx.resize(m.want);
+      sc.dist2.resize(m.want);
+    }
+  }
+  const std::size_t from = m.next, to = std::min(n, m.next + rows);
+  team.chunks(to - from, kRowChunk, [&](std::size_t begin, std::size_t end, int me) {
+    for (std::size_t i = from + begin; i < from + end; ++i) m.fill_row(static_cast<HoleIndex>(i), m.scratch[static_cast<std::size_t>(me)]);
   });
-  return c;
+  m.next = to;
+  return m.next == n;
+}
+
+Candidates NearestRows::take() { return std::move(impl_->c); }
+
+Candidates build_candidates(const Space& space, int k, Team& team) {
+  NearestRows rows(space, k);
+  rows.fill(team, space.holes());
+  return rows.take();
 }
 
 Candidates with_quadrant_neighbours(const Space& space, Candidates nearest) {

@@ -131,6 +131,7 @@ struct ColonyRun::State {
   std::vector<HoleIndex> input_index;  // by the colony's hole number: the hole's index in the problem given
   std::optional<detail::Clock> started;
   std::unique_ptr<detail::Colony> colony;
+  bool begun = false;  // the colony set up and its first route made (Colony::start)
   bool ended = false;
   Solution solution;
 };
@@ -183,11 +184,15 @@ bool ColonyRun::advance(int max_iterations, double max_seconds) {
   // One team a slice: the candidate lists' rows and ascent (first slice) and
   // the iterations all run on it, and a worker that starts late is never waited for.
   detail::Team::run(s.params.threads, [&](detail::Team& team) {
-    if (!s.colony) {
-      s.colony = std::make_unique<detail::Colony>(s.problem, s.params, team, *s.started);
-      s.colony->start();
-    }
+    // The set-up counts in the slice: at 10^6 holes it is seconds, and a
+    // slice of the page's must end on time for a Stop to be heard (issue 84).
     const double until = max_seconds > 0.0 ? s.started->seconds() + max_seconds : 0.0;
+    if (!s.colony) s.colony = std::make_unique<detail::Colony>(s.problem, s.params, team, *s.started);
+    if (!s.begun) {
+      if (!s.colony->set_up(team, until)) return;
+      s.colony->start();
+      s.begun = true;
+    }
     s.ended = s.colony->advance(team, max_iterations, until);
   });
   return s.ended;
@@ -195,7 +200,7 @@ bool ColonyRun::advance(int max_iterations, double max_seconds) {
 
 bool ColonyRun::ended() const { return state_->ended; }
 
-bool ColonyRun::begun() const { return state_->colony != nullptr; }
+bool ColonyRun::begun() const { return state_->begun; }
 
 int ColonyRun::iterations() const {
   const State& s = *state_;
@@ -215,11 +220,13 @@ const Params& ColonyRun::params() const { return state_->params; }
 
 Solution ColonyRun::finish() {
   State& s = *state_;
-  if (s.colony == nullptr && !s.ended) {
+  if (!s.begun && !s.ended) {
     // Not begun: the first route (nearest neighbour, improved), no iteration.
     detail::Team::run(s.params.threads, [&](detail::Team& team) {
-      s.colony = std::make_unique<detail::Colony>(s.problem, s.params, team, *s.started);
+      if (!s.colony) s.colony = std::make_unique<detail::Colony>(s.problem, s.params, team, *s.started);
+      s.colony->set_up(team, 0.0);
       s.colony->start();
+      s.begun = true;
       s.colony->first_search(0.0);
     });
   }

@@ -45,7 +45,7 @@ class ColonyRun {
   // Whether advance() has set the colony up (its candidate lists and first route).
   bool begun() const;
   int iterations() const;  // run so far
-  // The best route so far (empty before the first advance()), to draw while it runs.
+  // The best route so far (empty until begun()), to draw while it runs.
   Order best_order() const;
   // The best route so far; the run ends here if it had not (stop_reason
   // "stopped"). Call once.
