@@ -206,6 +206,7 @@ TEST(job_test, a_time_limit_that_covers_the_outputs_leaves_the_colony_out_when_t
   const job::Result r = job::plan(files_of({sample("plate70.dxf")}), settings);
   ASSERT_EQ(r.exit_code, 0) << r.error;
   EXPECT_FALSE(r.stopped);
+  EXPECT_TRUE(r.no_time_for_colony);
   EXPECT_EQ(r.plan.iterations, 0);
   ASSERT_FALSE(r.plan.groups.empty());
   for (const planning::ToolGroup& g : r.plan.groups) {
@@ -232,6 +233,7 @@ TEST(job_test, a_time_limit_that_covers_the_outputs_leaves_the_colony_out_when_t
   const job::Result a = job::plan(files_of({sample("plate70.dxf")}), plain);
   const job::Result b = job::plan(files_of({sample("plate70.dxf")}), budgeted);
   ASSERT_EQ(b.exit_code, 0) << b.error;
+  EXPECT_FALSE(b.no_time_for_colony);
   EXPECT_EQ(b.files.program, a.files.program);
   EXPECT_EQ(b.plan.input_order.time_s, a.plan.input_order.time_s);
   EXPECT_EQ(b.plan.input_order.travel_mm, a.plan.input_order.travel_mm);

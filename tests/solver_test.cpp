@@ -262,6 +262,17 @@ TEST(solver_test, a_run_in_slices_is_the_run_in_one) {
   }
 }
 
+namespace {
+
+// A run resumed slice by slice is the run made at once: the same route, length and iterations.
+void expect_same_run(const aco::Solution& sliced, const aco::Solution& whole) {
+  EXPECT_EQ(sliced.order, whole.order);
+  EXPECT_EQ(sliced.length, whole.length);
+  EXPECT_EQ(sliced.iterations, whole.iterations);
+}
+
+}  // namespace
+
 // Issue 84: slices by time end inside the first route's local search too (a
 // page's worker needs control back every 0.1 s, and that search takes seconds
 // on 10^5 holes), and resumed it makes the same moves: sliced every 2 ms, the
@@ -281,10 +292,7 @@ TEST(solver_test, time_slices_end_inside_the_first_search_and_change_nothing) {
     }
   }
   EXPECT_GT(slices_in_search, 1) << "the first search spans slices";
-  const aco::Solution sliced = run.finish();
-  EXPECT_EQ(sliced.order, whole.order);
-  EXPECT_EQ(sliced.length, whole.length);
-  EXPECT_EQ(sliced.iterations, whole.iterations);
+  expect_same_run(run.finish(), whole);
 }
 
 // Issue 84: the colony's set-up (the nearest lists' rows, the weights) is
@@ -302,10 +310,7 @@ TEST(solver_test, time_slices_end_inside_the_set_up_and_change_nothing) {
     if (!run.begun()) ++slices_in_set_up;
   }
   EXPECT_GT(slices_in_set_up, 3) << "the set-up spans slices";
-  const aco::Solution sliced = run.finish();
-  EXPECT_EQ(sliced.order, whole.order);
-  EXPECT_EQ(sliced.length, whole.length);
-  EXPECT_EQ(sliced.iterations, whole.iterations);
+  expect_same_run(run.finish(), whole);
 
   aco::ColonyRun early(p, params);
   EXPECT_FALSE(early.advance(0, 1e-6));

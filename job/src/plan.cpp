@@ -257,6 +257,7 @@ void PlanJob::Impl::budget_routing() {
   if (routing < kSetUpUnits * unit) {
     // No time for the colony: each tool's holes in nearest-neighbour order.
     router->stop("time limit");
+    r.no_time_for_colony = true;
     return;
   }
   o.solver.time_limit_s = routing;

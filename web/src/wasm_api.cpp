@@ -5,7 +5,6 @@
 // messages (Stop) before the next, since a worker inside C++ sees none.
 #include <emscripten/emscripten.h>
 
-#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <deque>
@@ -46,8 +45,8 @@ const char* const kOutOfMemory =
     "the job needs more memory than the browser gives this page: plan it with the command line (acodrill plan)";
 
 // The hole limit as the page names it in its messages.
-const char* const kPageHoleLimitNamed =
-    "the most this page plans in a browser's memory; the command line, acodrill plan, takes up to 5000000";
+const std::string kPageHoleLimitNamed = "the most this page plans in a browser's memory; the command line, acodrill plan, takes up to " +
+                                        std::to_string(job::InputSettings{}.max_holes);
 
 Session& session() {
   static Session s;
@@ -367,10 +366,7 @@ EMSCRIPTEN_KEEPALIVE const char* aco_finish() {
   out["routes"] = routes;
   out["input_routes"] = input_routes;
   out["stopped"] = r.stopped;
-  // The "Time limit" left the colony no time (budget_routing): first routes only.
-  out["no_time_for_colony"] = !r.plan.groups.empty() && std::all_of(r.plan.groups.begin(), r.plan.groups.end(), [](const planning::ToolGroup& g) {
-    return g.solution.stop_reason == "time limit" && g.solution.iterations == 0;
-  });
+  out["no_time_for_colony"] = r.no_time_for_colony;
   out["iterations"] = r.plan.iterations;
   out["solver_wall_s"] = r.plan.solver_wall_s;
   out["input_order"] = stats_of(r.plan.input_order);

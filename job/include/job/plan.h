@@ -73,6 +73,9 @@ struct Result {
   int exit_code = 0;   // 0; 2: the inputs or settings are wrong; 3: acodrill's own fault
   std::string error;   // the one line a front end shows after "acodrill: error: "
   bool stopped = false;  // ended early (stop flag or finish()): the best routes found so far
+  // SolverSettings::time_limit_covers_outputs left the colony no time: each
+  // tool's holes in their nearest-neighbour route.
+  bool no_time_for_colony = false;
   Files files;
   // The summary as values.
   aco::HoleSet holes;          // as drilled, in program coordinates
