@@ -273,6 +273,40 @@ void expect_same_run(const aco::Solution& sliced, const aco::Solution& whole) {
 
 }  // namespace
 
+// Issue 84: on one thread (a page's worker) a slice also ends between two
+// ants of an iteration and inside an ant's search, since at 10^6 holes an
+// iteration took longer than a slice; resumed there, the run is the one
+// solve() makes: every algorithm, with and without local search, focused
+// ants merged (12 000 holes). Sliced every microsecond, each slice does one
+// piece of work, so there are more slices than ants.
+TEST(solver_test, one_thread_slices_end_between_and_inside_ants_and_change_nothing) {
+  struct Case {
+    aco::Algorithm algorithm;
+    std::size_t holes;
+    int iterations;
+    aco::LocalSearch ls;
+  };
+  for (const Case& c : {Case{aco::Algorithm::AntSystem, 60, 5, aco::LocalSearch::None},
+                        Case{aco::Algorithm::AntColonySystem, 300, 5, aco::LocalSearch::TwoOptOrOpt},
+                        Case{aco::Algorithm::FocusedAcs, 900, 40, aco::LocalSearch::ThreeOpt},
+                        Case{aco::Algorithm::FocusedAcs, 12000, 4, aco::LocalSearch::FiveOpt}}) {
+    const aco::Problem p = random_problem(c.holes, 31, aco::Shape::OpenPath);
+    aco::Params params = quick(c.algorithm, c.ls);
+    params.iterations = c.iterations;
+    params.threads = 1;
+    const aco::Solution whole = aco::solve(p, params);
+    aco::ColonyRun run(p, params);
+    int slices = 0;
+    while (!run.advance(0, 1e-6)) ++slices;
+    SCOPED_TRACE(std::string(aco::to_string(c.algorithm)) + " " + std::to_string(c.holes) + " holes");
+    EXPECT_GT(slices, c.iterations * run.params().ants);
+    const aco::Solution sliced = run.finish();
+    expect_same_run(sliced, whole);
+    ASSERT_EQ(sliced.trace.size(), whole.trace.size());
+    for (std::size_t i = 0; i < whole.trace.size(); ++i) EXPECT_EQ(sliced.trace[i].best_length, whole.trace[i].best_length);
+  }
+}
+
 // Issue 84: slices by time end inside the first route's local search too (a
 // page's worker needs control back every 0.1 s, and that search takes seconds
 // on 10^5 holes), and resumed it makes the same moves: sliced every 2 ms, the

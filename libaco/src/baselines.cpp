@@ -20,26 +20,9 @@ namespace aco {
 namespace detail {
 
 Order nearest_neighbor_order(const Space& space, const Candidates&, HoleIndex first) {
-  const HoleIndex n = space.holes();
-  Order order;
-  order.reserve(n);
-  if (n == 0) return order;
-  BucketGrid grid(space);
-  HoleIndex cur;
-  if (space.open()) {
-    cur = grid.nearest(space.start(), [&](HoleIndex h) { return space.e(space.virtual_node(), h); });
-  } else {
-    cur = first < n ? first : 0;
-  }
-  grid.remove(cur);
-  order.push_back(cur);
-  while (!grid.empty()) {
-    const HoleIndex from = cur;
-    cur = grid.nearest(space.point(from), [&](HoleIndex h) { return space.d(from, h); });
-    grid.remove(cur);
-    order.push_back(cur);
-  }
-  return order;
+  NearestWalk walk(space, first);
+  walk.walk(space.holes());
+  return walk.take();
 }
 
 }  // namespace detail

@@ -173,4 +173,39 @@ class BucketGrid {
   std::vector<HoleIndex> items_, count_, slot_, alive_, alive_at_;
 };
 
+// The nearest-neighbour route (nearest_neighbor_order()) walked in pieces,
+// for the colony's first route: at 10^6 holes the whole walk took 0.4 s of a
+// page's slice (issue 84).
+class NearestWalk {
+ public:
+  // From hole `first` (a closed tour; an open path starts nearest its start point).
+  NearestWalk(const Space& space, HoleIndex first) : space_(space), grid_(space) {
+    const HoleIndex n = space.holes();
+    order_.reserve(n);
+    if (n == 0) return;
+    HoleIndex cur = first < n ? first : 0;
+    if (space.open()) cur = grid_.nearest(space.start(), [&](HoleIndex h) { return space.e(space.virtual_node(), h); });
+    grid_.remove(cur);
+    order_.push_back(cur);
+  }
+
+  // Walks on to up to `steps` more holes; true once every hole is in the order.
+  bool walk(std::size_t steps) {
+    for (; steps > 0 && !grid_.empty(); --steps) {
+      const HoleIndex from = order_.back();
+      const HoleIndex next = grid_.nearest(space_.point(from), [&](HoleIndex h) { return space_.d(from, h); });
+      grid_.remove(next);
+      order_.push_back(next);
+    }
+    return grid_.empty();
+  }
+
+  std::vector<HoleIndex> take() { return std::move(order_); }
+
+ private:
+  const Space& space_;
+  BucketGrid grid_;
+  std::vector<HoleIndex> order_;
+};
+
 }  // namespace aco::detail

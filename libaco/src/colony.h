@@ -252,6 +252,9 @@ class Colony {
   // The colony of a problem; set_up() then builds its candidate lists (every
   // other hole, alpha-nearest or nearest) and heuristic weights (colony.cpp).
   Colony(const Problem& problem, const Params& params, Team& team, const Clock& started);
+  // A slice of ColonyRun::advance() begins; `worked`: its work so far has
+  // made progress (see slice_over()).
+  void begin_slice(bool worked) { worked_ = worked; }
   // The set-up on `team`, in pieces (issue 84): true once done, false when
   // the clock reached `until_s` first (0: no bound) and a later call goes
   // on where it stopped. The nearest lists' rows and the weights are cut at
@@ -266,11 +269,12 @@ class Colony {
   // between two iterations, with the next one's ants drawn, so any slicing
   // runs the same iterations as one advance(). finish() gives the best
   // route; before the run has ended it ends it there ("stopped").
-  // Of start(): it makes the nearest-neighbour route; that route's local
-  // search, seconds on 10^5 holes, then runs in the slices' time
-  // (first_search), and the trail is set up after it, so that a slice ends
-  // on time even then.
-  void start();
+  // Of start(): it makes the nearest-neighbour route, in pieces, and is
+  // false when the clock reached `until_s` (0: no bound) first, a later call
+  // going on where it stopped; that route's local search, seconds on 10^5
+  // holes, then runs in the slices' time (first_search), and the trail is
+  // set up after it, so that a slice ends on time even then.
+  bool start(double until_s);
   // Runs the first route's search until it is done (true; the rounds are
   // then set up) or the clock reaches `until_s` (false; 0: no bound).
   bool first_search(double until_s);
@@ -305,6 +309,8 @@ class Colony {
     bool ended = false;
     int slice_last_it = 0;     // the slice's last iteration (0: none)
     double slice_until_s = 0;  // the slice ends at this clock (0: none)
+    int next_slot = 0;         // ants_in_turn(): the next ant of the round under way,
+    bool ant_begun = false;    // and whether its search is under way
     // Focused ants draw how many edges they may change, first thing; they are
     // handed out largest first, so a round ends on short ones and the workers
     // finish it together.
@@ -321,8 +327,18 @@ class Colony {
   // The team's rounds (rounds.cpp): the ants' order, one ant's work on a
   // worker, and after the barrier, on one thread, everything else; false ends the run.
   void order_ants();
-  void ant(int slot, int worker);
+  void ant(int slot, int worker);  // begin_ant(), the ant's search, end_ant()
+  void begin_ant(int slot, int worker);
+  void end_ant(int slot, int worker);
   bool after_round();
+  // The rounds on one thread, as Team::rounds() runs them there, but a slice
+  // may also end between two ants and inside an ant's search: at 10^6 holes
+  // an iteration's 20 ants took 0.2-0.7 s, one ant up to 0.3 s, longer than
+  // a page's slice (issue 84). The next slice goes on where this one ended;
+  // a round's ants read nothing another writes before after_round(), and a
+  // search resumed makes the moves it would have made, so the run is the
+  // same. Returns what advance() returns.
+  bool ants_in_turn();
   // Recombination (recombine.cpp): the improvements of the round's other ants
   // added to the best's where they touch other holes; may make `ib_route`
   // the merged route, with its length.
@@ -413,9 +429,9 @@ class Colony {
   detail::Team* team_;  // the team of the slice under way (advance())
   Space space_;
   HoleIndex n_;
-  // Where set_up() is: the lists (rows_ while the nearest are filled), then
-  // the weights (rows below weighted_ done).
-  enum class SetUp { Lists, Weights, Done } set_up_ = SetUp::Lists;
+  // Where set_up() is: the lists (rows_ while the nearest are filled), the
+  // weights (rows below weighted_ done), then the trail.
+  enum class SetUp { Lists, Weights, Trail, Done } set_up_ = SetUp::Lists;
   std::unique_ptr<NearestRows> rows_;
   HoleIndex weighted_ = 0;
   Candidates cand_;
@@ -446,6 +462,12 @@ class Colony {
   // The first route's search while it runs (start() to first_search()), and
   // the nearest-neighbour route's length, which sets the first trail.
   std::unique_ptr<LocalSearcher> first_search_;
+  std::unique_ptr<NearestWalk> first_walk_;  // the first route while start() walks it
+  // Whether a piece of work was done in the slice under way: a slice is over
+  // when the clock reaches its end and it has done one, so that any slice,
+  // however short, gets on, and none begins a piece once its time is up.
+  bool worked_ = false;
+  bool slice_over(double until_s) const { return worked_ && until_s > 0.0 && clock_.seconds() >= until_s; }
   double c_nn_ = 1.0;
   void start_rounds();
 };

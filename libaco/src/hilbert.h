@@ -38,24 +38,37 @@ inline std::uint64_t hilbert_index(std::uint32_t x, std::uint32_t y) {
   return d;
 }
 
-// The indices of `points` in curve order; points in one cell by index, so
-// the order depends on the points alone.
-inline std::vector<HoleIndex> hilbert_order(const std::vector<Point2>& points) {
-  std::vector<HoleIndex> order(points.size());
-  if (points.empty()) return order;
+// Each point's place along the curve, with its index: hilbert_order() in
+// two pieces (keys, then sort_keys) that a time slice may end between.
+using CurveKeys = std::vector<std::pair<std::uint64_t, HoleIndex>>;
+
+inline CurveKeys hilbert_keys(const std::vector<Point2>& points) {
+  CurveKeys keyed(points.size());
+  if (points.empty()) return keyed;
   const auto [lo, hi] = bounding_box(points);
   const double span = std::max(hi.x - lo.x, hi.y - lo.y);
   const double per_unit = span > 0.0 ? (kHilbertCells - 1) / span : 0.0;
   auto cell = [&](double v, double from) {
     return static_cast<std::uint32_t>(std::min<double>(kHilbertCells - 1, (v - from) * per_unit));
   };
-  std::vector<std::pair<std::uint64_t, HoleIndex>> keyed(points.size());
   for (std::size_t i = 0; i < points.size(); ++i) {
     keyed[i] = {hilbert_index(cell(points[i].x, lo.x), cell(points[i].y, lo.y)), static_cast<HoleIndex>(i)};
   }
+  return keyed;
+}
+
+// The indices in curve order; points in one cell by index, so the order
+// depends on the points alone.
+inline std::vector<HoleIndex> sort_keys(CurveKeys keyed) {
   std::sort(keyed.begin(), keyed.end());
+  std::vector<HoleIndex> order(keyed.size());
   for (std::size_t i = 0; i < keyed.size(); ++i) order[i] = keyed[i].second;
   return order;
+}
+
+// The indices of `points` in curve order.
+inline std::vector<HoleIndex> hilbert_order(const std::vector<Point2>& points) {
+  return sort_keys(hilbert_keys(points));
 }
 
 // How much longer the path through `points` in their own order is than in

@@ -261,16 +261,6 @@ void LocalSearcher::load(std::vector<HoleIndex>& route) {
   for (std::size_t i = 0; i < m_; ++i) pos_[route_[i]] = static_cast<std::uint32_t>(i);
 }
 
-void LocalSearcher::search_whole_route_from(const HoleIndex* first, const HoleIndex* last, Moves moves) {
-  windowed_ = false;
-  lo_ = 0;
-  hi_ = m_;
-  queue_.clear();
-  head_ = 0;
-  for (const HoleIndex* node = first; node != last; ++node) push(*node);
-  run_queue(moves);
-}
-
 void LocalSearcher::improve(std::vector<HoleIndex>& route, Moves moves) {
   begin(route, moves);
   search(nullptr);
@@ -331,17 +321,30 @@ void LocalSearcher::end(std::vector<HoleIndex>& route) {
 void LocalSearcher::unload(std::vector<HoleIndex>& route) { route.swap(route_); }
 
 void LocalSearcher::improve_from(std::vector<HoleIndex>& route, Moves moves, const std::vector<HoleIndex>& seeds) {
+  begin_from(route, moves, seeds);
+  search(nullptr);
+  end(route);
+}
+
+void LocalSearcher::begin_from(std::vector<HoleIndex>& route, Moves moves, const std::vector<HoleIndex>& seeds) {
   m_ = route.size();
   gain_ = 0.0;
   forgot_ = true;  // searched() says nothing of a route it did not search
   interrupted_ = false;
+  moves_ = moves;
+  loaded_ = false;
   if (m_ < 4 || cand_.k == 0 || seeds.empty()) return;
   load(route);
+  loaded_ = true;
   forgot_ = false;
   // Whole-route search: a focused ant makes few moves, so even at a million
   // holes the O(n) reversal of a few of them costs less than windows would.
-  search_whole_route_from(seeds.data(), seeds.data() + seeds.size(), moves);
-  unload(route);
+  windowed_ = false;
+  lo_ = 0;
+  hi_ = m_;
+  queue_.clear();
+  head_ = 0;
+  for (const HoleIndex seed : seeds) push(seed);
 }
 
 bool LocalSearcher::run_queue(Moves moves, const std::function<bool()>* pause) {

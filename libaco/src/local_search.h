@@ -83,6 +83,10 @@ class alignas(64) LocalSearcher {
   // there is four dependent loads against the array's two, and flips with
   // their splits were a fifth of the perf samples (29 588 holes, 440 an ant).
   void improve_from(std::vector<HoleIndex>& route, Moves moves, const std::vector<HoleIndex>& seeds);
+  // improve_from() in slices, as begin() is improve() in slices: search()
+  // and end() go on from here (issue 84: at 10^6 holes an ant's search took
+  // up to 0.3 s, longer than a page's slice).
+  void begin_from(std::vector<HoleIndex>& route, Moves moves, const std::vector<HoleIndex>& seeds);
   static constexpr std::size_t kWindow = 100000;
   // After an improve_from that searched (searched_all(): it had seeds, and
   // its queue never dropped its head on a long search): every hole it was
@@ -140,7 +144,6 @@ class alignas(64) LocalSearcher {
  private:
   void load(std::vector<HoleIndex>& route);    // route_ (taken from `route`) and pos_ (m_ set)
   void unload(std::vector<HoleIndex>& route);  // gives route_ back to `route`
-  void search_whole_route_from(const HoleIndex* first, const HoleIndex* last, Moves moves);
   // Searches the queue until it is empty (true) or `pause` says (false).
   bool run_queue(Moves moves, const std::function<bool()>* pause = nullptr);
   void open_window(std::size_t lo);

@@ -9,8 +9,18 @@
 
 namespace aco::detail {
 
-void Colony::start() {
+bool Colony::start(double until_s) {
   RunState& s = run_;
+  constexpr std::size_t kStepsAPiece = 16384;  // a few milliseconds in a browser
+  if (!first_walk_) {
+    if (slice_over(until_s)) return false;
+    first_walk_ = std::make_unique<NearestWalk>(space_, 0);  // its grid
+    worked_ = true;
+  }
+  for (bool walked = false; !walked; worked_ = true) {
+    if (slice_over(until_s)) return false;
+    walked = first_walk_->walk(kStepsAPiece);
+  }
   s.sol.algorithm = p_.algorithm;
   s.sol.ants = p_.ants;
   s.sol.threads = p_.threads;
@@ -18,7 +28,8 @@ void Colony::start() {
 
   // Nearest neighbour, improved when local search is on, starts the best-so-far
   // and gives C_nn for the initial trail.
-  s.best_route = route_from_order(space_, nearest_neighbor_order(space_, cand_));
+  s.best_route = route_from_order(space_, first_walk_->take());
+  first_walk_.reset();
   c_nn_ = std::max(space_.route_cost(s.best_route), 1e-9);
   s.use_ls = p_.local_search != LocalSearch::None;
   s.moves = p_.local_search == LocalSearch::FiveOpt       ? Moves::FiveOpt
@@ -27,19 +38,24 @@ void Colony::start() {
                                                           : Moves::TwoOpt;
   if (!s.use_ls) {
     start_rounds();
-    return;
+    return true;
   }
   first_search_ = std::make_unique<LocalSearcher>(space_, cand_);
   // A stop or the time limit ends this search too: at 10^5 holes and more
   // it is the run's longest step (issue 84).
   first_search_->interrupt_when([this] { return must_end(); });
   first_search_->begin(s.best_route, s.moves);
+  return true;
 }
 
 bool Colony::first_search(double until_s) {
   if (!first_search_) return true;
-  const std::function<bool()> slice_over = [&] { return until_s > 0.0 && clock_.seconds() >= until_s; };
-  if (!first_search_->search(slice_over)) return false;
+  if (slice_over(until_s)) return false;
+  // (The search asks after 63 holes at the least: it gets on however short the slice.)
+  const std::function<bool()> pause = [&] { return until_s > 0.0 && clock_.seconds() >= until_s; };
+  const bool searched = first_search_->search(pause);
+  worked_ = true;
+  if (!searched) return false;
   first_search_->end(run_.best_route);
   first_search_.reset();
   start_rounds();
@@ -117,9 +133,36 @@ bool Colony::advance(Team& team, int max_iterations, double until_s) {
   if (s.ended) return true;                  // (no iteration to run)
   s.slice_last_it = max_iterations > 0 ? s.it + max_iterations - 1 : 0;
   s.slice_until_s = until_s;
+  if (team_->threads() == 1 && (until_s > 0.0 || s.next_slot > 0 || s.ant_begun)) return ants_in_turn();
   team_->rounds(p_.ants, s.sol.thread_busy_s, [this](int slot, int worker) { ant(slot, worker); },
                 [this] { return after_round(); });
   return s.ended;
+}
+
+bool Colony::ants_in_turn() {
+  RunState& s = run_;
+  // (A search asks after 63 holes at the least: it gets on however short the slice.)
+  const std::function<bool()> pause = [&] { return s.slice_until_s > 0.0 && clock_.seconds() >= s.slice_until_s; };
+  for (;;) {
+    for (; s.next_slot < p_.ants; ++s.next_slot) {
+      const double t0 = clock_.seconds();
+      if (!s.ant_begun) {
+        if (slice_over(s.slice_until_s)) return false;
+        begin_ant(s.next_slot, 0);
+        s.ant_begun = true;
+      }
+      const bool searched = !s.use_ls || s.searchers[0].search(pause);
+      worked_ = true;
+      if (searched) {
+        end_ant(s.next_slot, 0);
+        s.ant_begun = false;
+      }
+      s.sol.thread_busy_s[0] += clock_.seconds() - t0;
+      if (!searched) return false;
+    }
+    s.next_slot = 0;
+    if (!after_round()) return s.ended;
+  }
 }
 
 Solution Colony::finish() {
@@ -151,6 +194,12 @@ void Colony::order_ants() {
 }
 
 void Colony::ant(int slot, int worker) {
+  begin_ant(slot, worker);
+  if (run_.use_ls) run_.searchers[static_cast<std::size_t>(worker)].search(nullptr);
+  end_ant(slot, worker);
+}
+
+void Colony::begin_ant(int slot, int worker) {
   const int k = run_.ant_of_slot[static_cast<std::size_t>(slot)];
   Rng rng(p_.seed, static_cast<std::uint64_t>(run_.it), static_cast<std::uint64_t>(k));
   AntWork& w = run_.workers[static_cast<std::size_t>(worker)];
@@ -162,11 +211,17 @@ void Colony::ant(int slot, int worker) {
     // to the first ants, measured worse (d1291 at 5 s: 0.74 % against 0.30 %).
     const int scale = static_cast<int>(rng.below(4));  // as order_ants drew it
     construct_focused(w, rng, std::max(1, (p_.focus_edges << scale) / 2));
-    if (run_.use_ls) run_.searchers[static_cast<std::size_t>(worker)].improve_from(w.route, run_.moves, w.seeds);
+    if (run_.use_ls) run_.searchers[static_cast<std::size_t>(worker)].begin_from(w.route, run_.moves, w.seeds);
   } else {
     construct(w, rng, run_.acs);
-    if (run_.use_ls) run_.searchers[static_cast<std::size_t>(worker)].improve(w.route, run_.moves);
+    if (run_.use_ls) run_.searchers[static_cast<std::size_t>(worker)].begin(w.route, run_.moves);
   }
+}
+
+void Colony::end_ant(int slot, int worker) {
+  const int k = run_.ant_of_slot[static_cast<std::size_t>(slot)];
+  AntWork& w = run_.workers[static_cast<std::size_t>(worker)];
+  if (run_.use_ls) run_.searchers[static_cast<std::size_t>(worker)].end(w.route);
   AntRoute& out = run_.work[static_cast<std::size_t>(k)];
   // A focused ant knows its length from its walk and its search's gains;
   // the iteration's best is measured again in full (update()).

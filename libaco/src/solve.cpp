@@ -129,6 +129,14 @@ struct ColonyRun::State {
   Params params;  // resolved
   Problem problem;  // numbered along a Hilbert curve when input_index is not empty
   std::vector<HoleIndex> input_index;  // by the colony's hole number: the hole's index in the problem given
+  // The Hilbert numbering (kCurveOrderFrom holes and more), made by
+  // advance() a piece at a time: the curve's keys, their sort, then the
+  // check that the input jumps about and the renumbering. At 10^6 holes each
+  // takes 0.1-0.2 s of a page's slice; made whole, they kept a Stop waiting
+  // half a second (issue 84).
+  enum class Numbering { Keys, Sort, Renumber, Done } numbering = Numbering::Done;
+  detail::CurveKeys curve_keys;
+  void number_piece();
   std::optional<detail::Clock> started;
   std::unique_ptr<detail::Colony> colony;
   bool begun = false;  // the colony set up and its first route made (Colony::start)
@@ -169,9 +177,31 @@ ColonyRun::ColonyRun(const Problem& problem, const Params& params) : state_(std:
     return;
   }
   s.started.emplace();
-  if (n >= kCurveOrderFrom) s.input_index = detail::hilbert_order(problem.points);
-  if (!s.input_index.empty() && detail::order_stretch(problem.points, s.input_index) <= kJumpyOrder) s.input_index.clear();
-  for (std::size_t i = 0; i < s.input_index.size(); ++i) s.problem.points[i] = problem.points[s.input_index[i]];
+  if (n >= kCurveOrderFrom) s.numbering = State::Numbering::Keys;
+}
+
+void ColonyRun::State::number_piece() {
+  switch (numbering) {
+    case Numbering::Keys:
+      curve_keys = detail::hilbert_keys(problem.points);
+      numbering = Numbering::Sort;
+      break;
+    case Numbering::Sort:
+      input_index = detail::sort_keys(std::move(curve_keys));
+      curve_keys = {};
+      numbering = Numbering::Renumber;
+      break;
+    case Numbering::Renumber:
+      if (detail::order_stretch(problem.points, input_index) <= kJumpyOrder) {
+        input_index.clear();
+      } else {
+        const std::vector<Point2> given = problem.points;
+        for (std::size_t i = 0; i < input_index.size(); ++i) problem.points[i] = given[input_index[i]];
+      }
+      numbering = Numbering::Done;
+      break;
+    case Numbering::Done: break;
+  }
 }
 
 ColonyRun::~ColonyRun() = default;
@@ -181,16 +211,28 @@ ColonyRun& ColonyRun::operator=(ColonyRun&&) noexcept = default;
 bool ColonyRun::advance(int max_iterations, double max_seconds) {
   State& s = *state_;
   if (s.ended) return true;
+  // The set-up counts in the slice: at 10^6 holes it is seconds, and a
+  // slice of the page's must end on time for a Stop to be heard (issue 84).
+  const double until = max_seconds > 0.0 ? s.started->seconds() + max_seconds : 0.0;
+  // A slice begins no piece once its time is up, but always its first.
+  bool worked = false;
+  const auto slice_over = [&] { return worked && until > 0.0 && s.started->seconds() >= until; };
+  if (s.numbering != State::Numbering::Done) {
+    for (; s.numbering != State::Numbering::Done; worked = true) {
+      if (slice_over()) return false;
+      s.number_piece();
+    }
+    // The k-d tree comes next, at 10^6 holes the longest piece of all: in a
+    // slice of its own, not after a piece that used most of this one.
+    if (until > 0.0) return false;
+  }
   // One team a slice: the candidate lists' rows and ascent (first slice) and
   // the iterations all run on it, and a worker that starts late is never waited for.
   detail::Team::run(s.params.threads, [&](detail::Team& team) {
-    // The set-up counts in the slice: at 10^6 holes it is seconds, and a
-    // slice of the page's must end on time for a Stop to be heard (issue 84).
-    const double until = max_seconds > 0.0 ? s.started->seconds() + max_seconds : 0.0;
     if (!s.colony) s.colony = std::make_unique<detail::Colony>(s.problem, s.params, team, *s.started);
+    s.colony->begin_slice(worked);
     if (!s.begun) {
-      if (!s.colony->set_up(team, until)) return;
-      s.colony->start();
+      if (!s.colony->set_up(team, until) || !s.colony->start(until)) return;
       s.begun = true;
     }
     s.ended = s.colony->advance(team, max_iterations, until);
@@ -222,10 +264,11 @@ Solution ColonyRun::finish() {
   State& s = *state_;
   if (!s.begun && !s.ended) {
     // Not begun: the first route (nearest neighbour, improved), no iteration.
+    while (s.numbering != State::Numbering::Done) s.number_piece();
     detail::Team::run(s.params.threads, [&](detail::Team& team) {
       if (!s.colony) s.colony = std::make_unique<detail::Colony>(s.problem, s.params, team, *s.started);
       s.colony->set_up(team, 0.0);
-      s.colony->start();
+      s.colony->start(0.0);
       s.begun = true;
       s.colony->first_search(0.0);
     });
