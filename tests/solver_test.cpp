@@ -329,22 +329,33 @@ TEST(solver_test, time_slices_end_inside_the_first_search_and_change_nothing) {
   expect_same_run(run.finish(), whole);
 }
 
-// Issue 84: the colony's set-up (the nearest lists' rows, the weights) is
-// cut by time slices too, since at 10^6 holes it takes seconds and a page's
-// Stop waits for the slice; cut anywhere, the run is the one solve() makes,
-// and a run ended in its set-up still gives a whole route.
+// Issue 84: the colony's set-up (the numbering, the nearest lists' rows, the
+// alpha-nearest lists' ascent steps, tree and rows, the weights, the first
+// route) is cut by time slices too, since at 10^6 holes (2 * 10^5 for the
+// alpha lists) it takes seconds and a page's Stop waits for the slice; cut
+// anywhere, the run is the one solve() makes, on one thread and two, and a
+// run ended in its set-up still gives a whole route.
 TEST(solver_test, time_slices_end_inside_the_set_up_and_change_nothing) {
   const aco::Problem p = random_problem(60000, 29, aco::Shape::OpenPath);
   aco::Params params = quick(aco::Algorithm::AntColonySystem, aco::LocalSearch::None);
   params.iterations = 2;
-  const aco::Solution whole = aco::solve(p, params);
-  aco::ColonyRun run(p, params);
-  int slices_in_set_up = 0;
-  while (!run.advance(0, 1e-6)) {
-    if (!run.begun()) ++slices_in_set_up;
+  for (const aco::LocalSearch ls : {aco::LocalSearch::None, aco::LocalSearch::ThreeOpt}) {
+    for (const int threads : {1, 2}) {
+      params.local_search = ls;
+      params.threads = threads;
+      const aco::Problem q = ls == aco::LocalSearch::None ? p : random_problem(20000, 29, aco::Shape::OpenPath);
+      const aco::Solution whole = aco::solve(q, params);
+      aco::ColonyRun run(q, params);
+      int slices_in_set_up = 0;
+      while (!run.advance(0, 1e-6)) {
+        if (!run.begun()) ++slices_in_set_up;
+      }
+      SCOPED_TRACE(std::string(aco::to_string(ls)) + ", " + std::to_string(threads) + " threads");
+      EXPECT_GT(slices_in_set_up, 10) << "the set-up spans slices";
+      expect_same_run(run.finish(), whole);
+    }
   }
-  EXPECT_GT(slices_in_set_up, 3) << "the set-up spans slices";
-  expect_same_run(run.finish(), whole);
+  params.local_search = aco::LocalSearch::None;
 
   aco::ColonyRun early(p, params);
   EXPECT_FALSE(early.advance(0, 1e-6));

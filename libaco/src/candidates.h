@@ -119,4 +119,24 @@ Candidates alpha_candidates(const Space& space, const Candidates& nearest, int k
 Candidates alpha_candidates(const Space& space, const Candidates& nearest, int k, int ascent_iterations, Team& team,
                             bool penalised_rows);
 
+// alpha_candidates() in pieces (issue 84: at 2 * 10^5 holes of one tool the
+// lists took 2-3 s of a page's slice, which a Stop waited for): each step()
+// is the graph, one step of the ascent, the tree, its lifting table, or
+// `rows` rows; true once the lists are whole. Any cut gives the same lists.
+class AlphaLists {
+ public:
+  AlphaLists(const Space& space, Candidates nearest, int k, int ascent_iterations, bool penalised_rows);
+  ~AlphaLists();
+  bool step(Team& team, std::size_t rows);
+  Candidates take();
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+// joined_nearest() of the nearest lists made by NearestRows: joined by the
+// quadrant neighbours where they fall apart.
+Candidates joined(const Space& space, Candidates nearest);
+
 }  // namespace aco::detail

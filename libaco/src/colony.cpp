@@ -20,10 +20,31 @@ bool Colony::set_up(Team& team, double until_s) {
     if (n_ <= kFullListLimit) {
       cand_ = detail::build_candidates(space_, static_cast<int>(n_) - 1, team);
     } else if (uses_alpha_lists(n_, p_.local_search)) {
-      Candidates nearest = detail::joined_nearest(space_, kAlphaFrom, team);
-      std::vector<double>().swap(nearest.length);  // not read by alpha_candidates: 13 MB less at 100 000 holes
-      cand_ = detail::alpha_candidates(space_, nearest, p_.candidates, ascent_iterations(n_, p_.time_limit_s), team,
-                                       uses_penalised_costs(n_, p_.local_search));
+      // joined_nearest() and alpha_candidates(), in pieces.
+      if (!alpha_) {
+        if (!rows_) {
+          rows_ = std::make_unique<NearestRows>(space_, kAlphaFrom);
+          worked_ = true;
+        }
+        for (bool filled = false; !filled; worked_ = true) {
+          if (slice_over()) return false;
+          filled = rows_->fill(team, kRowsAPiece);
+        }
+        // (No look at the clock here: a slice that came back to it would fill no row.)
+        Candidates nearest = detail::joined(space_, rows_->take());
+        rows_.reset();
+        std::vector<double>().swap(nearest.length);  // not read by alpha_candidates: 13 MB less at 100 000 holes
+        alpha_ = std::make_unique<AlphaLists>(space_, std::move(nearest), p_.candidates,
+                                              ascent_iterations(n_, p_.time_limit_s),
+                                              uses_penalised_costs(n_, p_.local_search));
+        worked_ = true;
+      }
+      for (bool made = false; !made; worked_ = true) {
+        if (slice_over()) return false;
+        made = alpha_->step(team, kRowsAPiece);
+      }
+      cand_ = alpha_->take();
+      alpha_.reset();
     } else {
       if (!rows_) {
         rows_ = std::make_unique<NearestRows>(space_, p_.candidates);  // the k-d tree: a piece of its own

@@ -258,8 +258,8 @@ class Colony {
   // The set-up on `team`, in pieces (issue 84): true once done, false when
   // the clock reached `until_s` first (0: no bound) and a later call goes
   // on where it stopped. The nearest lists' rows and the weights are cut at
-  // any row, with the same result; the full lists and the alpha-nearest
-  // (up to kAlphaLimit holes) are made whole.
+  // any row, the alpha-nearest at any step of theirs, with the same result;
+  // the full lists (up to kFullListLimit holes) are made whole.
   bool set_up(Team& team, double until_s);
 
   // The run (rounds.cpp), in slices: start() makes the first route and
@@ -433,6 +433,7 @@ class Colony {
   // weights (rows below weighted_ done), then the trail.
   enum class SetUp { Lists, Weights, Trail, Done } set_up_ = SetUp::Lists;
   std::unique_ptr<NearestRows> rows_;
+  std::unique_ptr<AlphaLists> alpha_;
   HoleIndex weighted_ = 0;
   Candidates cand_;
   int k_ = 0;

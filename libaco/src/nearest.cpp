@@ -163,8 +163,9 @@ Candidates with_quadrant_neighbours(const Space& space, Candidates nearest) {
   return nearest;
 }
 
-Candidates joined_nearest(const Space& space, int k, Team& team) {
-  Candidates nearest = build_candidates(space, k, team);
+Candidates joined_nearest(const Space& space, int k, Team& team) { return joined(space, build_candidates(space, k, team)); }
+
+Candidates joined(const Space& space, Candidates nearest) {
   const HoleIndex n = space.holes();
   std::vector<HoleIndex> root(n);
   std::iota(root.begin(), root.end(), 0);
