@@ -1,6 +1,7 @@
 #include "planning/plan.h"
 
 #include <algorithm>
+#include <optional>
 #include <numeric>
 #include <set>
 #include <chrono>
@@ -233,6 +234,10 @@ void GroupRouter::end_group() {
   if (c.problem.points.empty()) {
     group.optimized = group.nearest_neighbor = c.prefix;
   } else {
+    aco::Problem pnn = c.problem;
+    if (c.prefix.empty()) pnn.start = at_nn_;
+    const bool same_start = pnn.start.x == c.problem.start.x && pnn.start.y == c.problem.start.y;
+    std::optional<aco::Order> nn;
     if (stopped_ && !c.run.begun() && !c.run.ended()) {
       // Stopped before this tool began: its nearest-neighbour route, without
       // the colony's set-up (candidate lists and a first search: seconds at
@@ -241,13 +246,14 @@ void GroupRouter::end_group() {
       group.solution.length = aco::route_length(c.problem, group.solution.order);
       group.solution.algorithm = options_.solver.algorithm;
       group.solution.stop_reason = stop_reason_;
+      // The baseline from the same start is the same route: 0.6 s at 10^6 holes.
+      if (same_start) nn = group.solution.order;
     } else {
       group.solution = c.run.finish();
     }
     group.optimized = with_prefix(c.units.expand(group.solution.order));
-    aco::Problem pnn = c.problem;
-    if (c.prefix.empty()) pnn.start = at_nn_;
-    group.nearest_neighbor = with_prefix(c.units.expand(aco::nearest_neighbor(pnn)));
+    if (!nn) nn = aco::nearest_neighbor(pnn);
+    group.nearest_neighbor = with_prefix(c.units.expand(*nn));
   }
   at_ = holes_[group.optimized.back()].center;
   at_nn_ = holes_[group.nearest_neighbor.back()].center;
