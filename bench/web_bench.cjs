@@ -71,7 +71,12 @@ const median = (v) => { const s = [...v].sort((a, b) => a - b); const m = s.leng
   // saved; the time limit (10 s) is timed from Plan to the outputs, reading
   // the files again included; the longest task of the page's thread is the
   // long-task observer's, before Stop and with the results drawn.
+  // ACO_STOP_AFTER=2.5,3,4: Stop pressed at each of those seconds after Plan,
+  // a plan each (the set-up of 10^6 holes spans seconds); ACO_STOP_DIAMETERS=3.0:
+  // the same plates with one tool (the holes at the same places).
   const sizes = (process.env.ACO_STOP_SIZES || '3038,20000,100000,1000000').split(',').map(Number);
+  const stopAfters = (process.env.ACO_STOP_AFTER || '3').split(',').map(Number);
+  const diameters = (process.env.ACO_STOP_DIAMETERS || '3.0,5.0,6.35').split(',').map(Number);
   console.log('holes,holes_read,stop_pressed_after_s,stop_to_routing_ended_s,stop_to_outputs_s,longest_task_planning_ms,longest_task_with_results_ms,time_limit_s,plan_to_done_s,solver_s');
   for (const n of sizes) {
     let csv;
@@ -88,9 +93,10 @@ const median = (v) => { const s = [...v].sort((a, b) => a - b); const m = s.leng
         t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
         return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
       };
-      const d = [3.0, 5.0, 6.35];
       const lines = ['x,y,diameter'];
-      for (let i = 0; i < n; i++) lines.push((rnd() * 300).toFixed(3) + ',' + (rnd() * 200).toFixed(3) + ',' + d[Math.floor(rnd() * 3)]);
+      for (let i = 0; i < n; i++) {
+        lines.push((rnd() * 300).toFixed(3) + ',' + (rnd() * 200).toFixed(3) + ',' + diameters[Math.floor(rnd() * 3) % diameters.length]);
+      }
       fs.writeFileSync(csv, lines.join('\n') + '\n');
     }
     const fresh = await browser.newPage();
@@ -109,18 +115,22 @@ const median = (v) => { const s = [...v].sort((a, b) => a - b); const m = s.leng
     // Ended: the outputs are there to save (or the error is shown).
     const ended = () => fresh.waitForFunction(() => !document.getElementById('save-program').disabled ||
                                                     !document.getElementById('error').hidden, null, { timeout: 900000 });
-    await fresh.evaluate(() => { window.longest = 0; });
-    await fresh.getByRole('button', { name: 'Plan', exact: true }).click();
-    await fresh.waitForTimeout(3000);
-    const longestPlanning = await fresh.evaluate(() => window.longest);  // while it plans, before Stop
-    const pressed = Date.now();
-    await fresh.getByRole('button', { name: 'Stop', exact: true }).click();
-    await fresh.waitForFunction(() => document.body.dataset.routing === 'stopped' ||
-                                      /^(Done|Stopped)/.test(document.getElementById('status').textContent), null, { timeout: 900000 });
-    const routingS = (Date.now() - pressed) / 1000;
-    await ended();
-    const stopS = (Date.now() - pressed) / 1000;
-    const longest = await fresh.evaluate(() => window.longest);  // Stop and the results drawn included
+    const stops = [];
+    for (const after of stopAfters) {
+      await fresh.evaluate(() => { window.longest = 0; });
+      await fresh.getByRole('button', { name: 'Plan', exact: true }).click();
+      await fresh.waitForTimeout(after * 1000);
+      const longestPlanning = await fresh.evaluate(() => window.longest);  // while it plans, before Stop
+      const pressed = Date.now();
+      await fresh.getByRole('button', { name: 'Stop', exact: true }).click();
+      await fresh.waitForFunction(() => document.body.dataset.routing === 'stopped' ||
+                                        /^(Done|Stopped)/.test(document.getElementById('status').textContent), null, { timeout: 900000 });
+      const routingS = (Date.now() - pressed) / 1000;
+      await ended();
+      const stopS = (Date.now() - pressed) / 1000;
+      const longest = await fresh.evaluate(() => window.longest);  // Stop and the results drawn included
+      stops.push([after, routingS.toFixed(2), stopS.toFixed(2), Math.round(longestPlanning), Math.round(longest)]);
+    }
     await fresh.getByLabel('Time limit', { exact: true }).fill('10');
     await fresh.getByLabel('Time limit', { exact: true }).dispatchEvent('change');
     await fresh.waitForFunction(() => !document.getElementById('plan').disabled, null, { timeout: 600000 });
@@ -130,7 +140,7 @@ const median = (v) => { const s = [...v].sort((a, b) => a - b); const m = s.leng
     const planS = (Date.now() - t0) / 1000;
     const status = await fresh.locator('#status').textContent();
     const m = /iterations in ([\d.]+) s/.exec(status);
-    console.log([n, read, 3, routingS.toFixed(2), stopS.toFixed(2), Math.round(longestPlanning), Math.round(longest), 10, planS.toFixed(2), m ? m[1] : status].join(','));
+    for (const row of stops) console.log([n, read, ...row, 10, planS.toFixed(2), m ? m[1] : status].join(','));
     await fresh.close();
   }
   await browser.close();

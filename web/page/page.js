@@ -411,14 +411,24 @@
     drawQueued = true;
     requestAnimationFrame(() => { drawQueued = false; drawHoles(); });
   }
-  function fit(canvas, xyd) {
+  // The holes' extent, radii included, so that a large hole at the edge is
+  // drawn whole: into `box` ({x0, y0, x1, y1}), yielding when `due()` says.
+  function* extent(xyd, box, due) {
     let x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity;
-    // The holes' extent, radii included: a large hole at the edge is drawn whole.
     for (let i = 0; i < xyd.length; i += 3) {
       const r = 0.5 * (xyd[i + 2] || 0);
       x0 = Math.min(x0, xyd[i] - r); x1 = Math.max(x1, xyd[i] + r);
       y0 = Math.min(y0, xyd[i + 1] - r); y1 = Math.max(y1, xyd[i + 1] + r);
+      if (i % 3072 === 0 && due()) yield;
     }
+    Object.assign(box, { x0, y0, x1, y1 });
+  }
+  function fit(canvas, xyd) {
+    const box = {};
+    for (const _ of extent(xyd, box, () => false)) { /* never yields */ }
+    return framed(canvas, box);
+  }
+  function framed(canvas, { x0, y0, x1, y1 }) {
     const pad = 12, w = canvas.width - 2 * pad, h = canvas.height - 2 * pad;
     const k = Math.min(w / Math.max(1e-9, x1 - x0), h / Math.max(1e-9, y1 - y0));
     // Centred in the canvas, Y up as on the machine.
@@ -427,8 +437,9 @@
   }
   // A drawing of many holes runs in pieces of about 40 ms of the page's
   // thread (at 10^6 holes the plate took it 0.9 s in one task and the input
-  // order's picture 2.8 s; issue 84); a newer drawing of a canvas ends an
-  // older one.
+  // order's picture 2.8 s; issue 84), its extent and each hole's tool too
+  // (65 ms there), and begins in a task of its own; a newer drawing of a
+  // canvas ends an older one.
   const drawings = new WeakMap();
   function draw(canvas, v, orders) {
     const g = canvas.getContext('2d');
@@ -436,10 +447,13 @@
     drawings.set(canvas, token);
     g.clearRect(0, 0, canvas.width, canvas.height);
     if (!v || !v.holes.length) return;
-    const xyd = v.holes, f = fit(canvas, xyd);
-    const toolOf = new Int32Array(xyd.length / 3);
-    v.tools.forEach((t, k) => { for (const h of t.holes) toolOf[h] = k; });
-    const n = xyd.length / 3;
+    const xyd = v.holes, n = xyd.length / 3;
+    let f = null;  // the fit, once the extent is known
+    const toolOf = new Int32Array(n);
+    if (n <= LIVE_ROUTES_UP_TO) {
+      f = fit(canvas, xyd);
+      v.tools.forEach((t, k) => { for (const h of t.holes) toolOf[h] = k; });
+    }
     // Holes drilled are discs; a hole feature's other operations (issue 82)
     // are drawn over them as a drawing shows them: a counterbore or a reamer
     // a ring, a countersink a dashed ring, a tap three quarters of a ring, a
@@ -508,8 +522,21 @@
       const c = parseInt(colour.slice(1), 16);
       return ((alpha << 24) | (c & 0xff) << 16 | (c & 0xff00) | (c >> 16)) >>> 0;
     };
-    const PIECE = 4096;  // legs or holes between looks at the clock
+    // A piece ends at the first look at the clock after 40 ms (every 256
+    // legs or holes, 1024 holes of the extent): counted in legs alone, a
+    // piece of a random plate's input order took 80 ms.
+    let pieceEnd = 0;
+    const due = () => performance.now() >= pieceEnd;
     function* paint() {
+      const box = {};
+      yield* extent(xyd, box, due);
+      f = framed(canvas, box);
+      for (const [k, t] of v.tools.entries()) {
+        for (let j = 0; j < t.holes.length; j++) {
+          toolOf[t.holes[j]] = k;
+          if ((j & 255) === 0 && due()) yield;
+        }
+      }
       for (const [k, order] of (orders || []).entries()) {
         if (!order.length) continue;
         const c = pixel(COLOURS[k % COLOURS.length], 153);  // 0.6 opaque, as the strokes of few holes
@@ -529,7 +556,7 @@
           }
           x0 = x1;
           y0 = y1;
-          if (i % PIECE === 0) yield;
+          if ((i & 255) === 0 && due()) yield;
         }
       }
       // Squares over the routes, opaque.
@@ -543,24 +570,23 @@
           for (let yy = Math.max(0, y - r); yy < Math.min(h, y + r); yy++) {
             for (let xx = Math.max(0, x - r); xx < Math.min(w, x + r); xx++) px[yy * w + xx] = abgr;
           }
-          if (j % PIECE === 0) yield;
+          if ((j & 255) === 0 && due()) yield;
         }
       }
     }
     const steps = paint();
     const run = () => {
       if (drawings.get(canvas) !== token) return;
-      const until = performance.now() + 40;
-      while (performance.now() < until) {
-        if (!steps.next().done) continue;
-        layer.getContext('2d').putImageData(image, 0, 0);
-        g.drawImage(layer, 0, 0);
-        operations();
+      pieceEnd = performance.now() + 40;
+      if (!steps.next().done) {
+        setTimeout(run, 0);
         return;
       }
-      setTimeout(run, 0);
+      layer.getContext('2d').putImageData(image, 0, 0);
+      g.drawImage(layer, 0, 0);
+      operations();
     };
-    run();
+    setTimeout(run, 0);
   }
   function drawHoles() { draw($('holes-canvas'), view, routes); }
 
