@@ -6,15 +6,16 @@
 
 namespace aco::detail {
 
+// Rows a piece between two looks at the clock: tens of milliseconds in the
+// browser's single thread.
+constexpr std::size_t kRowsAPiece = 16384;
+
 Colony::Colony(const Problem& problem, const Params& params, Team& team, const Clock& started)
   : clock_(started), problem_(problem), p_(params), team_(&team), space_(problem), n_(space_.holes()) {}
 
 bool Colony::set_up(Team& team, double until_s) {
   team_ = &team;
   const auto slice_over = [&] { return this->slice_over(until_s); };
-  // Rows a piece between two looks at the clock: tens of milliseconds in
-  // the browser's single thread.
-  constexpr std::size_t kRowsAPiece = 16384;
   if (set_up_ == SetUp::Lists) {
     if (slice_over()) return false;
     if (n_ <= kFullListLimit) {
@@ -22,17 +23,10 @@ bool Colony::set_up(Team& team, double until_s) {
     } else if (uses_alpha_lists(n_, p_.local_search)) {
       // joined_nearest() and alpha_candidates(), in pieces.
       if (!alpha_) {
-        if (!rows_) {
-          rows_ = std::make_unique<NearestRows>(space_, kAlphaFrom);
-          worked_ = true;
-        }
-        for (bool filled = false; !filled; worked_ = true) {
-          if (slice_over()) return false;
-          filled = rows_->fill(team, kRowsAPiece);
-        }
+        Candidates nearest;
+        if (!nearest_rows(team, kAlphaFrom, until_s, nearest)) return false;
         // (No look at the clock here: a slice that came back to it would fill no row.)
-        Candidates nearest = detail::joined(space_, rows_->take());
-        rows_.reset();
+        nearest = detail::joined(space_, std::move(nearest));
         std::vector<double>().swap(nearest.length);  // not read by alpha_candidates: 13 MB less at 100 000 holes
         alpha_ = std::make_unique<AlphaLists>(space_, std::move(nearest), p_.candidates,
                                               ascent_iterations(n_, p_.time_limit_s),
@@ -45,17 +39,8 @@ bool Colony::set_up(Team& team, double until_s) {
       }
       cand_ = alpha_->take();
       alpha_.reset();
-    } else {
-      if (!rows_) {
-        rows_ = std::make_unique<NearestRows>(space_, p_.candidates);  // the k-d tree: a piece of its own
-        worked_ = true;
-      }
-      for (bool filled = false; !filled; worked_ = true) {
-        if (slice_over()) return false;
-        filled = rows_->fill(team, kRowsAPiece);
-      }
-      cand_ = rows_->take();
-      rows_.reset();
+    } else if (!nearest_rows(team, p_.candidates, until_s, cand_)) {
+      return false;
     }
     k_ = cand_.k;
     // Grown a piece at a time, as the lists are.
@@ -100,6 +85,20 @@ bool Colony::set_up(Team& team, double until_s) {
     set_up_ = SetUp::Done;
     worked_ = true;
   }
+  return true;
+}
+
+bool Colony::nearest_rows(Team& team, int k, double until_s, Candidates& out) {
+  if (!rows_) {
+    rows_ = std::make_unique<NearestRows>(space_, k);  // the k-d tree: a piece of its own
+    worked_ = true;
+  }
+  for (bool filled = false; !filled; worked_ = true) {
+    if (slice_over(until_s)) return false;
+    filled = rows_->fill(team, kRowsAPiece);
+  }
+  out = rows_->take();
+  rows_.reset();
   return true;
 }
 

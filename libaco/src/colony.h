@@ -433,6 +433,8 @@ class Colony {
   // weights (rows below weighted_ done), then the trail.
   enum class SetUp { Lists, Weights, Trail, Done } set_up_ = SetUp::Lists;
   std::unique_ptr<NearestRows> rows_;
+  // The k nearest of every hole into `out`, rows_ cut as set_up() cuts them.
+  bool nearest_rows(Team& team, int k, double until_s, Candidates& out);
   std::unique_ptr<AlphaLists> alpha_;
   HoleIndex weighted_ = 0;
   Candidates cand_;
